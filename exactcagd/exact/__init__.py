@@ -1,0 +1,1 @@
+"""Exact layer: rational scalars and Bernstein polynomial arithmetic."""

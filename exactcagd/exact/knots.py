@@ -1,0 +1,158 @@
+"""Exact B-spline algorithms on coefficient arrays (axis 0 = control-point index).
+
+Knot vectors follow the standard convention: ``len(knots) = n_points + p + 1``,
+clamped means the first and last knots have multiplicity ``p + 1``.  (Sederberg's
+notes 6.2 drop the two outermost knots; :func:`from_notes_knots` converts.)
+
+Sources: notes (003) 6.3 (Bézier extraction), 6.7 (knot insertion, Boehm),
+6.8 (de Boor); Yang et al. (004) section 3 (NURBS -> rational Bézier patches).
+
+>>> from exactcagd.exact.knots import check_knots
+>>> check_knots([0, 0, 0, 1, 2, 2, 2], 4, 2)
+(mpq(0,1), mpq(0,1), mpq(0,1), mpq(1,1), mpq(2,1), mpq(2,1), mpq(2,1))
+"""
+
+from __future__ import annotations
+
+import bisect
+
+import numpy as np
+
+from ..errors import DomainError, KnotError
+from .scalars import to_rational
+
+__all__ = [
+    "check_knots",
+    "from_notes_knots",
+    "find_span",
+    "de_boor",
+    "insert_knot",
+    "extract_bezier",
+    "multiplicity",
+    "domain",
+]
+
+
+def check_knots(knots, n_points: int, degree: int, clamped: bool = True) -> tuple:
+    """Validate a knot vector; return it as a tuple of ``mpq``.
+
+    Raises :class:`KnotError` for a wrong length, a decreasing vector, an empty
+    domain, interior multiplicity above ``degree``, or (``clamped=True``) end
+    multiplicities other than ``degree + 1``.
+    """
+    if degree < 0:
+        raise KnotError(f"degree must be >= 0, got {degree}")
+    ks = tuple(to_rational(k, where=f"knots[{i}]") for i, k in enumerate(knots))
+    expected = n_points + degree + 1
+    if len(ks) != expected:
+        raise KnotError(
+            f"knot vector has {len(ks)} knots; {n_points} control points of degree {degree} need {expected}"
+        )
+    for i in range(len(ks) - 1):
+        if ks[i] > ks[i + 1]:
+            raise KnotError(f"knot vector decreases at index {i}: {ks[i]} > {ks[i + 1]}")
+    if ks[degree] == ks[-degree - 1]:
+        raise KnotError("knot vector has an empty parameter domain")
+    if clamped:
+        if len(set(ks[: degree + 1])) != 1 or len(set(ks[-degree - 1 :])) != 1:
+            raise KnotError(f"knot vector is not clamped: the first and last {degree + 1} knots must be equal")
+        if ks[degree + 1] == ks[0] or ks[-degree - 2] == ks[-1]:
+            raise KnotError(f"end knots have multiplicity above degree + 1 = {degree + 1}")
+    for value in set(ks[degree + 1 : len(ks) - degree - 1]):
+        if multiplicity(ks, value) > degree and value not in (ks[0], ks[-1]):
+            raise KnotError(f"interior knot {value} has multiplicity above the degree {degree}")
+    return ks
+
+
+def from_notes_knots(knots) -> tuple:
+    """Convert a knot vector in the notes' convention (6.2) to the standard one.
+
+    The notes list ``n + p - 1`` knots for ``n`` control points; the standard form
+    repeats the first and last knot once more.
+    """
+    ks = tuple(to_rational(k) for k in knots)
+    return (ks[0],) + ks + (ks[-1],)
+
+
+def multiplicity(knots: tuple, value) -> int:
+    """How many times ``value`` occurs in the (sorted) knot vector."""
+    return bisect.bisect_right(knots, value) - bisect.bisect_left(knots, value)
+
+
+def domain(knots: tuple, degree: int) -> tuple:
+    """Parameter domain ``[knots[p], knots[-p-1]]``."""
+    return knots[degree], knots[len(knots) - degree - 1]
+
+
+def find_span(knots: tuple, degree: int, t) -> int:
+    """Index ``k`` with ``knots[k] <= t < knots[k+1]`` inside the domain (the last
+    non-empty span for the right end).  Raises :class:`DomainError` outside."""
+    lo, hi = domain(knots, degree)
+    if not (lo <= t <= hi):
+        raise DomainError(f"parameter {t} outside the spline domain [{lo}, {hi}]")
+    if t == hi:
+        return bisect.bisect_left(knots, hi) - 1
+    return bisect.bisect_right(knots, t) - 1
+
+
+def de_boor(points: np.ndarray, knots: tuple, degree: int, t):
+    """Evaluate the spline at ``t`` by de Boor's algorithm (notes 6.8), exactly."""
+    t = to_rational(t, where="t")
+    p = degree
+    k = find_span(knots, p, t)
+    d = [points[j + k - p].copy() if isinstance(points[j + k - p], np.ndarray) else points[j + k - p] for j in range(p + 1)]
+    for r in range(1, p + 1):
+        for j in range(p, r - 1, -1):
+            i = j + k - p
+            denom = knots[i + p + 1 - r] - knots[i]
+            alpha = (t - knots[i]) / denom
+            d[j] = (1 - alpha) * d[j - 1] + alpha * d[j]
+    return d[p]
+
+
+def insert_knot(points: np.ndarray, knots: tuple, degree: int, t, times: int = 1) -> tuple[np.ndarray, tuple]:
+    """Insert ``t`` ``times`` times by Boehm's algorithm (notes 6.7).
+
+    Returns the new control array and knot vector; the spline is unchanged.
+    Raises :class:`KnotError` if the multiplicity would exceed ``degree``
+    (``degree + 1`` at the domain ends is already full).
+    """
+    t = to_rational(t, where="inserted knot")
+    p = degree
+    lo, hi = domain(knots, p)
+    if not (lo < t < hi):
+        raise DomainError(f"inserted knot {t} must lie inside the open domain ({lo}, {hi})")
+    if multiplicity(knots, t) + times > p:
+        raise KnotError(f"inserting {t} {times} time(s) would exceed multiplicity {p}")
+    for _ in range(times):
+        k = find_span(knots, p, t)
+        new = [None] * (points.shape[0] + 1)
+        for i in range(points.shape[0] + 1):
+            if i <= k - p:
+                new[i] = points[i]
+            elif i >= k + 1:
+                new[i] = points[i - 1]
+            else:
+                alpha = (t - knots[i]) / (knots[i + p] - knots[i])
+                new[i] = (1 - alpha) * points[i - 1] + alpha * points[i]
+        points = np.stack(new) if isinstance(new[0], np.ndarray) else np.array(new, dtype=object)
+        knots = knots[: k + 1] + (t,) + knots[k + 1 :]
+    return points, knots
+
+
+def extract_bezier(points: np.ndarray, knots: tuple, degree: int) -> list[tuple[tuple, np.ndarray]]:
+    """Bézier extraction (notes 6.3; Yang et al. section 3): raise every interior knot
+    to multiplicity ``degree``; return ``[((a, b), bezier_coefficients), ...]`` for the
+    non-empty knot spans in order.  Requires a clamped knot vector."""
+    p = degree
+    lo, hi = domain(knots, p)
+    for value in sorted(set(k for k in knots if lo < k < hi)):
+        need = p - multiplicity(knots, value)
+        if need > 0:
+            points, knots = insert_knot(points, knots, p, value, need)
+    breaks = sorted(set(k for k in knots if lo <= k <= hi))
+    pieces = []
+    for idx, (a, b) in enumerate(zip(breaks[:-1], breaks[1:])):
+        start = idx * p
+        pieces.append(((a, b), points[start : start + p + 1].copy()))
+    return pieces

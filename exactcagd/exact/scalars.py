@@ -1,0 +1,281 @@
+"""Exact rational scalars: the single entry point for user numbers.
+
+Every number that enters the exact layer passes through :func:`to_rational`,
+which returns a ``gmpy2.mpq``.  Floats are handled by an explicit policy:
+
+* ``"exact"`` (default): a float is converted to the rational number equal to its
+  binary value, e.g. ``0.1 -> 3602879701896397/36028797018963968``;
+* ``"reject"``: a float raises :class:`~exactcagd.errors.InexactInputError`.
+
+NaN and infinities are always rejected.  The policy can be set globally with
+:func:`set_float_policy` or locally with the :func:`float_policy` context manager.
+
+>>> from exactcagd.exact.scalars import to_rational
+>>> to_rational("3/7")
+mpq(3,7)
+>>> to_rational(0.5)
+mpq(1,2)
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import numbers
+import threading
+from fractions import Fraction
+
+import gmpy2
+from gmpy2 import mpq, mpz
+
+from ..errors import InexactInputError, InputError
+
+__all__ = [
+    "Rational",
+    "to_rational",
+    "to_rational_array",
+    "float_policy",
+    "set_float_policy",
+    "get_float_policy",
+    "to_fraction",
+    "to_sympy",
+    "rational_str",
+]
+
+#: The exact scalar type used throughout the exact layer.
+Rational = type(mpq(0))
+
+_POLICIES = ("exact", "reject")
+_state = threading.local()
+_default_policy = "exact"
+
+
+def get_float_policy() -> str:
+    """Return the float policy in force in this thread (``"exact"`` or ``"reject"``)."""
+    return getattr(_state, "policy", _default_policy)
+
+
+def set_float_policy(policy: str) -> None:
+    """Set the process-wide default float policy (``"exact"`` or ``"reject"``)."""
+    global _default_policy
+    _check_policy(policy)
+    _default_policy = policy
+
+
+@contextlib.contextmanager
+def float_policy(policy: str):
+    """Context manager that sets the float policy for the enclosed block.
+
+    >>> from exactcagd.exact.scalars import float_policy, to_rational
+    >>> with float_policy("reject"):
+    ...     to_rational(1)
+    mpq(1,1)
+    """
+    _check_policy(policy)
+    previous = getattr(_state, "policy", None)
+    _state.policy = policy
+    try:
+        yield
+    finally:
+        if previous is None:
+            del _state.policy
+        else:
+            _state.policy = previous
+
+
+def _check_policy(policy: str) -> None:
+    if policy not in _POLICIES:
+        raise InputError(f"unknown float policy {policy!r}; expected one of {_POLICIES}")
+
+
+def _from_float(x: float, policy: str, where: str) -> Rational:
+    if math.isnan(x) or math.isinf(x):
+        raise InexactInputError(f"{where}: {x!r} is not a finite number")
+    if policy == "reject":
+        raise InexactInputError(
+            f"{where}: float {x!r} rejected by the 'reject' float policy; "
+            "give an int, a Fraction or a string such as '3/7'"
+        )
+    return mpq(*x.as_integer_ratio())
+
+
+def to_rational(x, *, policy: str | None = None, where: str = "value") -> Rational:
+    """Convert one user number to an exact rational (``gmpy2.mpq``).
+
+    Parameters
+    ----------
+    x : int, Fraction, gmpy2.mpz/mpq, str, sympy Rational/Integer, float, numpy scalar
+        The number.  Strings are parsed exactly (``"3/7"``, ``"-2"``, ``"0.125"``,
+        ``"1e-3"``); decimal strings mean their decimal value, not a float.
+    policy : {"exact", "reject"}, optional
+        Float policy; defaults to the one in force (:func:`get_float_policy`).
+    where : str
+        Name of the value, used in error messages.
+
+    Returns
+    -------
+    gmpy2.mpq
+
+    Raises
+    ------
+    InexactInputError
+        For NaN/inf, for floats under ``"reject"``, for irrational sympy numbers.
+    InputError
+        For anything that is not a number.
+
+    Examples
+    --------
+    >>> to_rational("0.125")
+    mpq(1,8)
+    >>> to_rational(0.1) == to_rational("1/10")
+    False
+    """
+    if policy is None:
+        policy = get_float_policy()
+    else:
+        _check_policy(policy)
+    if isinstance(x, Rational):
+        return x
+    if isinstance(x, bool):
+        raise InputError(f"{where}: booleans are not numbers here ({x!r})")
+    if isinstance(x, (int, type(mpz(0)))):
+        return mpq(x)
+    if isinstance(x, Fraction):
+        return mpq(x.numerator, x.denominator)
+    if isinstance(x, float):
+        return _from_float(x, policy, where)
+    if isinstance(x, str):
+        return _from_string(x, where)
+    # numpy scalars
+    try:
+        import numpy as np
+
+        if isinstance(x, np.integer):
+            return mpq(int(x))
+        if isinstance(x, np.floating):
+            return _from_float(float(x), policy, where)
+    except ImportError:  # pragma: no cover
+        pass
+    if type(x).__module__.startswith("gmpy2"):  # mpfr: exact binary value, like float
+        if not gmpy2.is_finite(x):
+            raise InexactInputError(f"{where}: {x!r} is not a finite number")
+        if policy == "reject":
+            raise InexactInputError(f"{where}: mpfr {x!r} rejected by the 'reject' float policy")
+        return mpq(x)
+    if type(x).__module__.startswith("sympy"):
+        return _from_sympy(x, policy, where)
+    if type(x).__module__.startswith("flint"):
+        return _from_flint(x, where)
+    if isinstance(x, numbers.Rational):
+        return mpq(int(x.numerator), int(x.denominator))
+    raise InputError(f"{where}: cannot convert {x!r} of type {type(x).__name__} to an exact rational")
+
+
+def _from_string(s: str, where: str) -> Rational:
+    text = s.strip()
+    try:
+        if "/" in text:
+            num, den = text.split("/")
+            value = Fraction(int(num.strip()), int(den.strip()))
+        else:
+            value = Fraction(text)  # decimal strings are exact decimals
+    except (ValueError, ZeroDivisionError) as exc:
+        raise InputError(f"{where}: cannot parse {s!r} as an exact rational ({exc})") from None
+    if text.lower() in {"nan", "inf", "-inf", "+inf", "infinity"}:  # pragma: no cover
+        raise InexactInputError(f"{where}: {s!r} is not a finite number")
+    return mpq(value.numerator, value.denominator)
+
+
+def _from_sympy(x, policy: str, where: str) -> Rational:
+    import sympy
+
+    if isinstance(x, sympy.Rational):
+        return mpq(int(x.p), int(x.q))
+    if isinstance(x, sympy.Float):
+        return _from_float(float(x), policy, where) if x._prec <= 53 else _exact_mpf(x, policy, where)
+    if isinstance(x, sympy.Basic) and x.is_number:
+        simplified = sympy.nsimplify(x, rational=False) if not x.is_Rational else x
+        if simplified.is_Rational:
+            return mpq(int(simplified.p), int(simplified.q))
+        raise InexactInputError(f"{where}: {x} is not rational; exact rationals only")
+    raise InputError(f"{where}: sympy object {x!r} is not a number")
+
+
+def _exact_mpf(x, policy: str, where: str) -> Rational:
+    if policy == "reject":
+        raise InexactInputError(f"{where}: sympy Float {x} rejected by the 'reject' float policy")
+    import mpmath
+
+    man, exp = mpmath.mpf(x._mpf_).man_exp
+    return mpq(int(man)) * (mpq(2) ** exp)
+
+
+def _from_flint(x, where: str) -> Rational:
+    import flint
+
+    if isinstance(x, flint.fmpz):
+        return mpq(int(x))
+    if isinstance(x, flint.fmpq):
+        return mpq(int(x.p), int(x.q))
+    raise InputError(f"{where}: cannot convert flint object {x!r} to an exact rational")
+
+
+def to_rational_array(values, *, policy: str | None = None, where: str = "array"):
+    """Convert a (possibly nested) sequence to a numpy object array of ``mpq``.
+
+    The array is rectangular; a ragged input raises :class:`InputError` naming it.
+
+    >>> to_rational_array([[1, "1/2"], [0, 3]]).shape
+    (2, 2)
+    """
+    import numpy as np
+
+    def convert(item, path):
+        if isinstance(item, (list, tuple)) or (isinstance(item, np.ndarray) and item.ndim > 0):
+            return [convert(sub, f"{path}[{i}]") for i, sub in enumerate(item)]
+        return to_rational(item, policy=policy, where=f"{where}{path}")
+
+    nested = convert(values, "")
+    shape = _rectangular_shape(nested, where)
+    out = np.empty(shape, dtype=object)
+    _fill(out, nested, ())
+    return out
+
+
+def _rectangular_shape(nested, where):
+    shape = []
+    level = [nested]
+    while level and isinstance(level[0], list):
+        lengths = {len(x) if isinstance(x, list) else -1 for x in level}
+        if len(lengths) != 1 or -1 in lengths:
+            raise InputError(f"{where}: ragged nested sequence (lengths {sorted(lengths)} at depth {len(shape)})")
+        shape.append(lengths.pop())
+        level = [y for x in level for y in x]
+    if any(isinstance(x, list) for x in level):  # pragma: no cover - caught above
+        raise InputError(f"{where}: ragged nested sequence")
+    return tuple(shape)
+
+
+def _fill(out, nested, index):
+    if isinstance(nested, list):
+        for i, sub in enumerate(nested):
+            _fill(out, sub, index + (i,))
+    else:
+        out[index] = nested
+
+
+def to_fraction(x: Rational) -> Fraction:
+    """Return the exact rational ``x`` as a :class:`fractions.Fraction`."""
+    return Fraction(int(x.numerator), int(x.denominator))
+
+
+def to_sympy(x: Rational):
+    """Return the exact rational ``x`` as a ``sympy.Rational``."""
+    import sympy
+
+    return sympy.Rational(int(x.numerator), int(x.denominator))
+
+
+def rational_str(x: Rational) -> str:
+    """Return ``"p/q"`` (or ``"p"`` for integers): the exchange format of exact data."""
+    return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"

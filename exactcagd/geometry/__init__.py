@@ -1,0 +1,1 @@
+"""Geometry layer: exact Bézier and B-spline/NURBS curves and surfaces."""

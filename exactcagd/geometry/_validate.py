@@ -1,0 +1,61 @@
+"""Input checks shared by the geometry classes (one place for every message)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import DomainError, InputError, WeightError
+from ..exact.scalars import to_rational, to_rational_array
+
+
+def point_array(points, ndim: int, what: str) -> np.ndarray:
+    """Exact object array of points with ``ndim`` index axes plus one coordinate axis."""
+    array = to_rational_array(points, where=what)
+    if array.ndim != ndim + 1:
+        raise InputError(
+            f"{what}: expected {ndim} index axis/axes plus a coordinate axis "
+            f"(shape like {'(n+1, d)' if ndim == 1 else '(l+1, m+1, d)'}), got shape {array.shape}"
+        )
+    if 0 in array.shape:
+        raise InputError(f"{what}: empty (shape {array.shape})")
+    return array
+
+
+def weight_array(weights, shape: tuple, what: str) -> np.ndarray | None:
+    """Exact positive weights of the given shape, or ``None`` for a polynomial object."""
+    if weights is None:
+        return None
+    array = to_rational_array(weights, where=what)
+    if array.shape != shape:
+        raise WeightError(f"{what}: expected shape {shape} (one weight per control point), got {array.shape}")
+    bad = [tuple(int(i) for i in idx) for idx in np.ndindex(*shape) if not array[idx] > 0]
+    if bad:
+        raise WeightError(
+            f"{what}: weights must be positive; non-positive at index {bad[0]}"
+            + (f" and {len(bad) - 1} more" if len(bad) > 1 else "")
+        )
+    return array
+
+
+def unit_parameter(t, what: str = "t", allow_outside: bool = False):
+    """Exact parameter, checked to lie in [0, 1] unless ``allow_outside``."""
+    value = to_rational(t, where=what)
+    if not allow_outside and not (0 <= value <= 1):
+        raise DomainError(f"{what} = {value} lies outside the domain [0, 1]")
+    return value
+
+
+def homogeneous(points: np.ndarray, weights: np.ndarray | None) -> np.ndarray:
+    """Homogeneous points ``(w P, w)`` stacked on the last axis."""
+    if weights is None:
+        ones = np.full(points.shape[:-1] + (1,), 1, dtype=object)
+        return np.concatenate([points, ones * to_rational(1)], axis=-1)
+    return np.concatenate([points * weights[..., None], weights[..., None]], axis=-1)
+
+
+def dehomogenize(hom: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Split homogeneous points into (points, weights); weights must be non-zero."""
+    w = hom[..., -1]
+    if any(x == 0 for x in w.reshape(-1)):
+        raise WeightError("a homogeneous control point has weight zero (point at infinity)")
+    return hom[..., :-1] / w[..., None], w.copy()

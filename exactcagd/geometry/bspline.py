@@ -1,0 +1,313 @@
+"""Exact B-spline and NURBS curves and surfaces with clamped knot vectors.
+
+Sources: Sederberg's notes (003) chapter 6 (6.3 extraction, 6.7 knot insertion,
+6.8 de Boor) and 15.7 (NURBS surfaces); Yang et al. (004) section 3 (splitting a
+NURBS surface into rational Bézier patches by knot insertion).
+
+Rational (NURBS) objects are handled in homogeneous form ``(w P, w)``, so every
+algorithm is the polynomial one applied one dimension up.
+
+>>> from exactcagd import BSplineCurve
+>>> c = BSplineCurve([[0, 0], [1, 1], [2, 0], [3, 1]], knots=[0, 0, 0, 1, 2, 2, 2])
+>>> c.degree, c.domain
+(2, (mpq(0,1), mpq(2,1)))
+>>> c.evaluate(1)
+(mpq(3,2), mpq(1,2))
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import InputError
+from ..exact import knots as kn
+from ..exact.scalars import rational_str, to_rational
+from ._validate import dehomogenize, homogeneous, point_array, weight_array
+from .bezier_curve import BezierCurve
+from .bezier_surface import BezierSurface
+
+__all__ = ["BSplineCurve", "BSplineSurface"]
+
+
+def _degree_from(n_points: int, knots, degree) -> int:
+    inferred = len(knots) - n_points - 1
+    if degree is not None and degree != inferred:
+        raise InputError(
+            f"degree {degree} does not match {n_points} control points and {len(knots)} knots "
+            f"(which give degree {inferred})"
+        )
+    if inferred < 0:
+        raise InputError(f"{len(knots)} knots are too few for {n_points} control points")
+    return inferred
+
+
+def _project(hom: np.ndarray, rational: bool) -> tuple:
+    if not rational:
+        return tuple(hom[:-1])
+    return tuple(x / hom[-1] for x in hom[:-1])
+
+
+class BSplineCurve:
+    """A clamped B-spline (NURBS with ``weights``) curve with exact data.
+
+    Parameters
+    ----------
+    control_points : sequence of ``n`` points of dimension ``d``
+    knots : sequence of ``n + p + 1`` non-decreasing numbers, clamped
+    weights : ``n`` positive numbers, optional
+    degree : int, optional
+        Checked against ``len(knots) - n - 1`` if given.
+
+    Examples
+    --------
+    >>> c = BSplineCurve([[0, 0], [1, 1], [2, 0], [3, 1]], knots=[0, 0, 0, 1, 2, 2, 2])
+    >>> [piece.control_points[0] for _, piece in c.to_bezier()]
+    [(mpq(0,1), mpq(0,1)), (mpq(3,2), mpq(1,2))]
+    """
+
+    __slots__ = ("_points", "_weights", "_knots", "_degree")
+
+    def __init__(self, control_points, knots, weights=None, degree: int | None = None):
+        points = point_array(control_points, 1, "control_points")
+        p = _degree_from(points.shape[0], list(knots), degree)
+        self._knots = kn.check_knots(knots, points.shape[0], p)
+        self._degree = p
+        self._points = points
+        self._weights = weight_array(weights, (points.shape[0],), "weights")
+
+    @classmethod
+    def _trusted(cls, points, weights, knots, degree) -> "BSplineCurve":
+        curve = object.__new__(cls)
+        curve._points, curve._weights, curve._knots, curve._degree = points, weights, knots, degree
+        return curve
+
+    def _array(self) -> np.ndarray:
+        return self._points if self._weights is None else homogeneous(self._points, self._weights)
+
+    def _from_array(self, array, knots) -> "BSplineCurve":
+        if self._weights is None:
+            return BSplineCurve._trusted(array, None, knots, self._degree)
+        points, weights = dehomogenize(array)
+        return BSplineCurve._trusted(points, weights, knots, self._degree)
+
+    # ------------------------------------------------------------------ properties
+    @property
+    def degree(self) -> int:
+        return self._degree
+
+    @property
+    def dimension(self) -> int:
+        return self._points.shape[1]
+
+    @property
+    def is_rational(self) -> bool:
+        return self._weights is not None
+
+    @property
+    def knots(self) -> tuple:
+        return self._knots
+
+    @property
+    def domain(self) -> tuple:
+        """Parameter interval ``(knots[p], knots[-p-1])``."""
+        return kn.domain(self._knots, self._degree)
+
+    @property
+    def control_points(self) -> tuple:
+        return tuple(tuple(p) for p in self._points)
+
+    @property
+    def weights(self) -> tuple | None:
+        return None if self._weights is None else tuple(self._weights)
+
+    def breakpoints(self) -> tuple:
+        """Distinct knots inside the domain, ends included."""
+        lo, hi = self.domain
+        return tuple(sorted(set(k for k in self._knots if lo <= k <= hi)))
+
+    # ------------------------------------------------------------------ algorithms
+    def evaluate(self, t) -> tuple:
+        """Exact point at ``t`` by de Boor's algorithm (notes 6.8)."""
+        value = kn.de_boor(self._array(), self._knots, self._degree, t)
+        return _project(np.append(value, 1) if self._weights is None else value, self._weights is not None)
+
+    __call__ = evaluate
+
+    def insert_knot(self, t, times: int = 1) -> "BSplineCurve":
+        """Insert ``t`` ``times`` times (Boehm, notes 6.7); the curve is unchanged."""
+        array, knots = kn.insert_knot(self._array(), self._knots, self._degree, t, times)
+        return self._from_array(array, knots)
+
+    def to_bezier(self) -> list[tuple[tuple, BezierCurve]]:
+        """Exact Bézier extraction (notes 6.3): ``[((a, b), BezierCurve), ...]``.
+
+        Each piece is parametrized over [0, 1]; ``(a, b)`` is its knot span.
+        """
+        pieces = kn.extract_bezier(self._array(), self._knots, self._degree)
+        if self._weights is None:
+            return [(span, BezierCurve._trusted(arr, None)) for span, arr in pieces]
+        return [(span, BezierCurve.from_homogeneous(arr)) for span, arr in pieces]
+
+    def to_dict(self) -> dict:
+        out = {
+            "degree": self._degree,
+            "knots": [rational_str(k) for k in self._knots],
+            "control_points": [[rational_str(x) for x in p] for p in self._points],
+        }
+        if self._weights is not None:
+            out["weights"] = [rational_str(w) for w in self._weights]
+        return out
+
+    def __repr__(self) -> str:
+        kind = "NURBS" if self.is_rational else "BSpline"
+        return f"<{kind}Curve degree={self.degree} points={len(self._points)} dimension={self.dimension}>"
+
+
+class BSplineSurface:
+    """A clamped tensor-product B-spline (NURBS with ``weights``) surface, exact.
+
+    Parameters
+    ----------
+    control_net : nested sequence, shape ``(n_u, n_v, d)``
+    knots_u, knots_v : clamped knot vectors of lengths ``n_u + p + 1`` and ``n_v + q + 1``
+    weights : shape ``(n_u, n_v)``, positive, optional
+
+    Examples
+    --------
+    >>> net = [[[i, j, 0] for j in range(3)] for i in range(3)]
+    >>> s = BSplineSurface(net, [0, 0, 1, 2, 2], [0, 0, 0, 1, 1, 1])
+    >>> s.degree, len(s.to_bezier_patches())
+    ((1, 2), 2)
+    """
+
+    __slots__ = ("_net", "_weights", "_knots_u", "_knots_v", "_p", "_q")
+
+    def __init__(self, control_net, knots_u, knots_v, weights=None):
+        net = point_array(control_net, 2, "control_net")
+        self._p = _degree_from(net.shape[0], list(knots_u), None)
+        self._q = _degree_from(net.shape[1], list(knots_v), None)
+        self._knots_u = kn.check_knots(knots_u, net.shape[0], self._p)
+        self._knots_v = kn.check_knots(knots_v, net.shape[1], self._q)
+        self._net = net
+        self._weights = weight_array(weights, net.shape[:2], "weights")
+
+    @classmethod
+    def _trusted(cls, net, weights, knots_u, knots_v, p, q) -> "BSplineSurface":
+        s = object.__new__(cls)
+        s._net, s._weights, s._knots_u, s._knots_v, s._p, s._q = net, weights, knots_u, knots_v, p, q
+        return s
+
+    def _array(self) -> np.ndarray:
+        return self._net if self._weights is None else homogeneous(self._net, self._weights)
+
+    def _from_array(self, array, knots_u, knots_v) -> "BSplineSurface":
+        if self._weights is None:
+            return BSplineSurface._trusted(array, None, knots_u, knots_v, self._p, self._q)
+        net, weights = dehomogenize(array)
+        return BSplineSurface._trusted(net, weights, knots_u, knots_v, self._p, self._q)
+
+    # ------------------------------------------------------------------ properties
+    @property
+    def degree(self) -> tuple[int, int]:
+        return self._p, self._q
+
+    @property
+    def dimension(self) -> int:
+        return self._net.shape[2]
+
+    @property
+    def is_rational(self) -> bool:
+        return self._weights is not None
+
+    @property
+    def knots_u(self) -> tuple:
+        return self._knots_u
+
+    @property
+    def knots_v(self) -> tuple:
+        return self._knots_v
+
+    @property
+    def domain(self) -> tuple:
+        """``((u_min, u_max), (v_min, v_max))``."""
+        return kn.domain(self._knots_u, self._p), kn.domain(self._knots_v, self._q)
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """Number of control points in u and v."""
+        return self._net.shape[:2]
+
+    @property
+    def control_net(self) -> tuple:
+        return tuple(tuple(tuple(p) for p in row) for row in self._net)
+
+    @property
+    def weights(self) -> tuple | None:
+        return None if self._weights is None else tuple(tuple(r) for r in self._weights)
+
+    def breakpoints(self) -> tuple[tuple, tuple]:
+        """Distinct knots of the domain in u and in v (ends included)."""
+        (u0, u1), (v0, v1) = self.domain
+        return (
+            tuple(sorted(set(k for k in self._knots_u if u0 <= k <= u1))),
+            tuple(sorted(set(k for k in self._knots_v if v0 <= k <= v1))),
+        )
+
+    # ------------------------------------------------------------------ algorithms
+    def evaluate(self, u, v) -> tuple:
+        """Exact point at ``(u, v)``: de Boor in u on every column, then in v."""
+        u, v = to_rational(u, where="u"), to_rational(v, where="v")
+        column = kn.de_boor(self._array(), self._knots_u, self._p, u)  # shape (n_v, ...)
+        value = kn.de_boor(column, self._knots_v, self._q, v)
+        return _project(np.append(value, 1) if self._weights is None else value, self._weights is not None)
+
+    __call__ = evaluate
+
+    def insert_knot_u(self, u, times: int = 1) -> "BSplineSurface":
+        """Insert ``u`` into the u knot vector (Boehm on every column of the net)."""
+        array, knots = kn.insert_knot(self._array(), self._knots_u, self._p, u, times)
+        return self._from_array(array, knots, self._knots_v)
+
+    def insert_knot_v(self, v, times: int = 1) -> "BSplineSurface":
+        """Insert ``v`` into the v knot vector (Boehm on every row of the net)."""
+        moved = np.moveaxis(self._array(), 1, 0)
+        array, knots = kn.insert_knot(moved, self._knots_v, self._q, v, times)
+        return self._from_array(np.moveaxis(array, 0, 1), self._knots_u, knots)
+
+    def to_bezier_patches(self, u_spans=None, v_spans=None) -> dict:
+        """Exact extraction into Bézier patches (notes 15.7; Yang et al. section 3).
+
+        Returns ``{(i, j): ((u_span, v_span), BezierSurface)}`` for the non-empty knot
+        spans; ``u_spans``/``v_spans`` (sets of span indices) restrict the work to the
+        patches a caller needs.
+        """
+        u_pieces = kn.extract_bezier(self._array(), self._knots_u, self._p)
+        out = {}
+        for i, (u_span, strip) in enumerate(u_pieces):
+            if u_spans is not None and i not in u_spans:
+                continue
+            v_pieces = kn.extract_bezier(np.moveaxis(strip, 1, 0), self._knots_v, self._q)
+            for j, (v_span, patch) in enumerate(v_pieces):
+                if v_spans is not None and j not in v_spans:
+                    continue
+                patch = np.moveaxis(patch, 0, 1)
+                surface = (
+                    BezierSurface._trusted(patch, None) if self._weights is None else BezierSurface.from_homogeneous(patch)
+                )
+                out[(i, j)] = ((u_span, v_span), surface)
+        return out
+
+    def to_dict(self) -> dict:
+        out = {
+            "degree": list(self.degree),
+            "knots_u": [rational_str(k) for k in self._knots_u],
+            "knots_v": [rational_str(k) for k in self._knots_v],
+            "control_net": [[[rational_str(x) for x in p] for p in row] for row in self._net],
+        }
+        if self._weights is not None:
+            out["weights"] = [[rational_str(x) for x in row] for row in self._weights]
+        return out
+
+    def __repr__(self) -> str:
+        kind = "NURBS" if self.is_rational else "BSpline"
+        return f"<{kind}Surface degree={self.degree} shape={self.shape} dimension={self.dimension}>"
