@@ -1,0 +1,290 @@
+"""Exact real algebraic numbers: a root of an irreducible integer polynomial with an
+isolating interval with rational endpoints.
+
+Crossing parameters, intersection parameters and roots in general are irrational
+in most cases; exactcagd never rounds them.  A :class:`RealAlgebraic` is either a
+rational number (``is_rational``) or the unique root of its irreducible defining
+polynomial in an open interval ``(lo, hi)``; the interval can be refined to any
+width by exact bisection, and comparisons are exact.
+
+Isolation: the polynomial is factored over the integers (python-flint), every
+irreducible factor's real roots are isolated by flint's certified complex root
+finder (real roots come back with exactly zero imaginary part), the balls are
+turned into rational intervals and the sign change at the endpoints is checked
+exactly.
+
+>>> from exactcagd.exact.algebraic import real_roots
+>>> [(str(r), m) for r, m in real_roots([-1, 0, 2], 0, 1)]      # 2 t^2 - 1 on [0, 1]
+[('root of 2*t^2 - 1 in (0, 1)', 1)]
+"""
+
+from __future__ import annotations
+
+from functools import total_ordering
+
+import flint
+from gmpy2 import mpq
+
+from ..errors import InputError
+from .scalars import rational_str, to_rational
+
+__all__ = ["RealAlgebraic", "real_roots", "real_roots_bernstein", "integer_poly"]
+
+
+def _mpq_from_arf(x) -> mpq:
+    man, exp = x.man_exp()
+    man, exp = int(man), int(exp)
+    return mpq(man * 2**exp) if exp >= 0 else mpq(man, 2 ** (-exp))
+
+
+def integer_poly(coeffs) -> flint.fmpz_poly:
+    """Primitive integer polynomial with the roots of ``sum coeffs[k] t^k`` (rational coeffs)."""
+    qs = [to_rational(c, where=f"coefficient {k}") for k, c in enumerate(coeffs)]
+    poly = flint.fmpq_poly([flint.fmpq(int(q.numerator), int(q.denominator)) for q in qs])
+    if poly == 0:
+        raise InputError("the zero polynomial has every number as a root")
+    num = poly.numer()
+    content = num.content()
+    num = flint.fmpz_poly([c // content for c in num.coeffs()])
+    if num.coeffs()[-1] < 0:
+        num = -num
+    return num
+
+
+def _sign_at(poly: flint.fmpz_poly, x: mpq) -> int:
+    value = poly(flint.fmpq(int(x.numerator), int(x.denominator)))
+    return (value > 0) - (value < 0)
+
+
+@total_ordering
+class RealAlgebraic:
+    """A real algebraic number, carried exactly.
+
+    Attributes
+    ----------
+    poly : flint.fmpz_poly
+        Irreducible, primitive, positive leading coefficient (degree 1 for rationals).
+    lo, hi : mpq
+        Isolating interval: ``lo < x < hi`` (``lo == hi == x`` when rational).
+    """
+
+    __slots__ = ("poly", "lo", "hi")
+
+    def __init__(self, poly: flint.fmpz_poly, lo, hi):
+        self.poly = poly
+        self.lo, self.hi = mpq(lo), mpq(hi)
+        if poly.degree() == 1:
+            c0, c1 = (int(c) for c in poly.coeffs())
+            self.lo = self.hi = mpq(-c0, c1)
+
+    @classmethod
+    def from_rational(cls, value) -> "RealAlgebraic":
+        q = to_rational(value)
+        return cls(flint.fmpz_poly([-int(q.numerator), int(q.denominator)]), q, q)
+
+    @property
+    def is_rational(self) -> bool:
+        return self.poly.degree() == 1
+
+    @property
+    def value(self) -> mpq:
+        """The exact rational value (only for rational numbers)."""
+        if not self.is_rational:
+            raise InputError(f"{self} is irrational; use .refine() or float()")
+        return self.lo
+
+    def refine(self, width) -> "RealAlgebraic":
+        """Shrink the isolating interval below ``width`` by exact bisection (in place)."""
+        width = to_rational(width, where="width")
+        if width <= 0:
+            raise InputError("refinement width must be positive")
+        if self.is_rational:
+            return self
+        s_lo = _sign_at(self.poly, self.lo)
+        while self.hi - self.lo >= width:
+            mid = (self.lo + self.hi) / 2
+            s_mid = _sign_at(self.poly, mid)
+            if s_mid == 0:  # cannot happen for an irreducible poly of degree >= 2
+                self.poly = flint.fmpz_poly([-int(mid.numerator), int(mid.denominator)])
+                self.lo = self.hi = mid
+                return self
+            if s_mid == s_lo:
+                self.lo = mid
+            else:
+                self.hi = mid
+        return self
+
+    def interval(self, width=None) -> tuple[mpq, mpq]:
+        """The isolating interval, refined below ``width`` if given."""
+        if width is not None:
+            self.refine(width)
+        return self.lo, self.hi
+
+    def __float__(self) -> float:
+        if self.is_rational:
+            return float(self.lo)
+        scale = max(abs(self.lo), abs(self.hi), mpq(1, 2**1000))
+        self.refine(scale * mpq(1, 2**60))
+        return float((self.lo + self.hi) / 2)
+
+    def _cmp_rational(self, q: mpq) -> int:
+        if self.is_rational:
+            return (self.lo > q) - (self.lo < q)
+        while self.lo <= q <= self.hi:
+            if q == self.lo:
+                return 1
+            if q == self.hi:
+                return -1
+            self.refine((self.hi - self.lo) / 2)
+        return 1 if self.lo > q else -1
+
+    def _cmp(self, other) -> int:
+        if isinstance(other, RealAlgebraic):
+            if other.is_rational:
+                return self._cmp_rational(other.lo)
+            if self.is_rational:
+                return -other._cmp_rational(self.lo)
+            if self.poly == other.poly and not (self.hi <= other.lo or other.hi <= self.lo):
+                # Each interval holds exactly one (simple) root; they hold the same one
+                # iff the overlap shows a sign change.
+                lo, hi = max(self.lo, other.lo), min(self.hi, other.hi)
+                if lo < hi and _sign_at(self.poly, lo) * _sign_at(self.poly, hi) < 0:
+                    return 0
+            while not (self.hi <= other.lo or other.hi <= self.lo):
+                self.refine((self.hi - self.lo) / 2)
+                other.refine((other.hi - other.lo) / 2)
+            return -1 if self.hi <= other.lo else 1
+        return self._cmp_rational(to_rational(other))
+
+    def __eq__(self, other) -> bool:
+        try:
+            return self._cmp(other) == 0
+        except InputError:
+            return NotImplemented
+
+    def __lt__(self, other) -> bool:
+        return self._cmp(other) < 0
+
+    def __hash__(self):
+        return hash((tuple(int(c) for c in self.poly.coeffs()),) if not self.is_rational else self.lo)
+
+    def to_dict(self) -> dict:
+        """Exchange form: defining polynomial (integer coefficients, low to high) and interval."""
+        if self.is_rational:
+            return {"rational": rational_str(self.lo)}
+        return {
+            "polynomial": [str(int(c)) for c in self.poly.coeffs()],
+            "interval": [rational_str(self.lo), rational_str(self.hi)],
+        }
+
+    def to_sympy(self):
+        """A sympy ``CRootOf`` (or ``Rational``) equal to this number."""
+        import sympy
+
+        if self.is_rational:
+            return sympy.Rational(int(self.lo.numerator), int(self.lo.denominator))
+        t = sympy.Symbol("t")
+        expr = sum(int(c) * t**k for k, c in enumerate(self.poly.coeffs()))
+        for root in sympy.Poly(expr, t).real_roots():
+            if sympy.Rational(str(self.lo)) < root < sympy.Rational(str(self.hi)):
+                return root
+        raise AssertionError("isolating interval lost its root")  # pragma: no cover
+
+    def __str__(self) -> str:
+        if self.is_rational:
+            return rational_str(self.lo)
+        terms = []
+        for k, c in reversed(list(enumerate(self.poly.coeffs()))):
+            c = int(c)
+            if c == 0:
+                continue
+            mono = "" if k == 0 else ("t" if k == 1 else f"t^{k}")
+            coef = str(c) if (abs(c) != 1 or k == 0) else ("-" if c < 0 else "")
+            terms.append(f"{coef}*{mono}" if mono and coef not in ("", "-") else f"{coef}{mono}")
+        text = " + ".join(terms).replace("+ -", "- ")
+        return f"root of {text} in ({rational_str(self.lo)}, {rational_str(self.hi)})"
+
+    def __repr__(self) -> str:
+        return f"RealAlgebraic({self})"
+
+
+def _dyadic_hull(lo: mpq, hi: mpq, k: int) -> tuple[mpq, mpq]:
+    scale = mpq(2) ** k
+    return mpq(int((lo * scale).__floor__()), 1) / scale, mpq(int((hi * scale).__ceil__()), 1) / scale
+
+
+def _isolate_factor(factor: flint.fmpz_poly) -> list[RealAlgebraic]:
+    """Isolating intervals of the real roots of an irreducible factor.
+
+    flint's balls are tight but have huge denominators; each is widened to the
+    coarsest dyadic interval that still avoids every other root's ball, so the
+    printed data stay small.
+    """
+    if factor.degree() == 1:
+        return [RealAlgebraic(factor, 0, 0)]
+    balls = []
+    for root, _ in factor.complex_roots():
+        if root.imag.is_zero():
+            mid, rad = _mpq_from_arf(root.real.mid()), _mpq_from_arf(root.real.rad())
+            balls.append((mid - rad, mid + rad))
+    out = []
+    for i, (lo, hi) in enumerate(balls):
+        others = balls[:i] + balls[i + 1 :]
+        for k in range(-64, 4096):
+            a, b = _dyadic_hull(lo, hi, k)
+            if all(b < o_lo or a > o_hi for o_lo, o_hi in others):
+                break
+        if _sign_at(factor, a) * _sign_at(factor, b) >= 0:  # pragma: no cover - flint guarantees
+            raise ArithmeticError("root isolation failed a sign check")
+        out.append(RealAlgebraic(factor, a, b))
+    return out
+
+
+def real_roots(coeffs, lo=None, hi=None) -> list[tuple[RealAlgebraic, int]]:
+    """All real roots of ``sum coeffs[k] t^k`` in the closed interval ``[lo, hi]``.
+
+    Parameters
+    ----------
+    coeffs : sequence of exact numbers, power basis, lowest degree first
+    lo, hi : optional bounds (``None`` = unbounded)
+
+    Returns
+    -------
+    list of (RealAlgebraic, multiplicity), sorted increasingly.
+    """
+    poly = integer_poly(coeffs)
+    lo = None if lo is None else to_rational(lo)
+    hi = None if hi is None else to_rational(hi)
+    if poly.degree() <= 0:
+        return []
+    _, factors = poly.factor()
+    roots = []
+    for factor, mult in factors:
+        if factor.coeffs()[-1] < 0:
+            factor = -factor
+        for r in _isolate_factor(factor):
+            roots.append((r, int(mult)))
+    out = []
+    for r, m in roots:
+        if lo is not None and r < lo:
+            continue
+        if hi is not None and r > hi:
+            continue
+        if not r.is_rational:  # shrink the interval inside [lo, hi]
+            if lo is not None and r.lo < lo:
+                r.lo = lo
+            if hi is not None and r.hi > hi:
+                r.hi = hi
+        out.append((r, m))
+    out.sort(key=lambda pair: pair[0])
+    return out
+
+
+def real_roots_bernstein(coeffs, lo=0, hi=1) -> list[tuple[RealAlgebraic, int]]:
+    """Real roots in ``[lo, hi]`` of a polynomial given by Bernstein coefficients on [0, 1]."""
+    import numpy as np
+
+    from .bernstein import as_coefficients, to_power
+
+    c = coeffs if isinstance(coeffs, np.ndarray) else as_coefficients(coeffs)
+    return real_roots(list(to_power(c)), lo, hi)
