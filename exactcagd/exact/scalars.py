@@ -40,6 +40,7 @@ __all__ = [
     "to_fraction",
     "to_sympy",
     "rational_str",
+    "to_float",
 ]
 
 #: The exact scalar type used throughout the exact layer.
@@ -152,8 +153,12 @@ def to_rational(x, *, policy: str | None = None, where: str = "value") -> Ration
 
         if isinstance(x, np.integer):
             return mpq(int(x))
-        if isinstance(x, np.floating):
-            return _from_float(float(x), policy, where)
+        if isinstance(x, np.floating):  # exact binary value of any width (float16 ... longdouble)
+            if not np.isfinite(x):
+                raise InexactInputError(f"{where}: {x!r} is not a finite number")
+            if policy == "reject":
+                return _from_float(float(x), policy, where)
+            return mpq(*(int(v) for v in x.as_integer_ratio()))
     except ImportError:  # pragma: no cover
         pass
     if type(x).__module__.startswith("gmpy2"):  # mpfr: exact binary value, like float
@@ -173,6 +178,8 @@ def to_rational(x, *, policy: str | None = None, where: str = "value") -> Ration
 
 def _from_string(s: str, where: str) -> Rational:
     text = s.strip()
+    if text.lower().lstrip("+-") in {"nan", "inf", "infinity"}:
+        raise InexactInputError(f"{where}: {s!r} is not a finite number")
     try:
         if "/" in text:
             num, den = text.split("/")
@@ -181,8 +188,6 @@ def _from_string(s: str, where: str) -> Rational:
             value = Fraction(text)  # decimal strings are exact decimals
     except (ValueError, ZeroDivisionError) as exc:
         raise InputError(f"{where}: cannot parse {s!r} as an exact rational ({exc})") from None
-    if text.lower() in {"nan", "inf", "-inf", "+inf", "infinity"}:  # pragma: no cover
-        raise InexactInputError(f"{where}: {s!r} is not a finite number")
     return mpq(value.numerator, value.denominator)
 
 
@@ -204,10 +209,11 @@ def _from_sympy(x, policy: str, where: str) -> Rational:
 def _exact_mpf(x, policy: str, where: str) -> Rational:
     if policy == "reject":
         raise InexactInputError(f"{where}: sympy Float {x} rejected by the 'reject' float policy")
-    import mpmath
-
-    man, exp = mpmath.mpf(x._mpf_).man_exp
-    return mpq(int(man)) * (mpq(2) ** exp)
+    # the raw (sign, mantissa, exponent, bits) tuple: exact at the Float's own precision
+    # (mpmath.mpf(...) would round it to the working precision, 53 bits by default)
+    sign, man, exp, _ = x._mpf_
+    value = mpq(int(man)) * (mpq(2) ** int(exp))
+    return -value if sign else value
 
 
 def _from_flint(x, where: str) -> Rational:
@@ -279,3 +285,12 @@ def to_sympy(x: Rational):
 def rational_str(x: Rational) -> str:
     """Return ``"p/q"`` (or ``"p"`` for integers): the exchange format of exact data."""
     return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
+
+
+def to_float(x: Rational) -> float:
+    """The float64 nearest to the exact rational ``x`` (correctly rounded, ties to even).
+
+    Python's ``int / int`` true division is correctly rounded, which makes this the
+    reference for the float companions of exact outputs.
+    """
+    return int(x.numerator) / int(x.denominator)

@@ -1,0 +1,1 @@
+"""Application layer: CLI back-ends (proof ledger runner, benchmarks)."""

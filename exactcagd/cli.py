@@ -1,0 +1,136 @@
+"""The ``exactcagd`` command line.
+
+Subcommands: ``info`` (capabilities), ``verify`` (proof ledger), ``plan`` / ``run``
+(scenes), ``refdata`` (exact reference data), ``bench`` (benchmarks).  Every
+subcommand imports its machinery lazily so ``exactcagd --version`` stays instant.
+
+>>> from exactcagd.cli import main
+>>> main(["--version"])  # doctest: +ELLIPSIS
+exactcagd ...
+0
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from . import __version__
+from .errors import ExactCAGDError
+
+#: (module, description) of each capability listed by ``exactcagd info``.
+CAPABILITIES = [
+    ("exactcagd.exact.scalars", "exact rationals (gmpy2.mpq) with an explicit float policy"),
+    ("exactcagd.exact.bernstein", "Bernstein arithmetic: de Casteljau, Horner, subdivision, elevation, reduction, products, blossoms"),
+    ("exactcagd.exact.algebraic", "real algebraic numbers with isolating intervals (flint)"),
+    ("exactcagd.geometry.bezier_curve", "BezierCurve: polynomial and rational, any dimension"),
+    ("exactcagd.geometry.bezier_surface", "BezierSurface: tensor-product, polynomial and rational"),
+    ("exactcagd.geometry.bspline", "BSplineCurve / BSplineSurface (NURBS): de Boor, Boehm, Bezier extraction"),
+    ("exactcagd.composition", "exact composition F(K(t)) of curves with surfaces (Lasser & Bonneau)"),
+    ("exactcagd.reparam", "Mobius / quadratic / cubic reparameterization of rational surfaces (Yang et al.)"),
+    ("exactcagd.curves_on_surfaces", "G1 parabola / hyperbola / polyline curves on NURBS surfaces (Yang et al.)"),
+    ("exactcagd.algebra", "resultants, implicitization, inversion, moving lines, Groebner bases"),
+    ("exactcagd.numeric.evaluate", "float evaluators with certified error bounds"),
+    ("exactcagd.numeric.interval", "interval arithmetic and interval Bezier curves"),
+    ("exactcagd.numeric.intersect", "curve intersection: subdivision, interval, Bezier clipping, exact"),
+    ("exactcagd.scenes", "scene files, lazy planner, runner, reference data"),
+]
+
+
+def _available(module: str) -> bool:
+    try:
+        importlib.import_module(module)
+    except ImportError:
+        return False
+    return True
+
+
+def cmd_info(args) -> int:
+    """Print version, backends and which capabilities are installed."""
+    import flint
+    import gmpy2
+    import mpmath
+    import numpy
+    import sympy
+
+    print(f"exactcagd {__version__}")
+    print(
+        f"backends: sympy {sympy.__version__}, python-flint {flint.__version__}, gmpy2 {gmpy2.version()}, "
+        f"numpy {numpy.__version__}, mpmath {mpmath.__version__}"
+    )
+    print("capabilities:")
+    for module, text in CAPABILITIES:
+        mark = "yes" if _available(module) else "no "
+        print(f"  [{mark}] {text}  ({module})")
+    return 0
+
+
+def _lazy(module: str, func: str):
+    def run(args):
+        return getattr(importlib.import_module(module), func)(args)
+
+    return run
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="exactcagd", description="Exact computer algebra for CAGD.")
+    parser.add_argument("--version", action="version", version=f"exactcagd {__version__}")
+    sub = parser.add_subparsers(dest="command")
+
+    info = sub.add_parser("info", help="list capabilities and backends")
+    info.set_defaults(func=cmd_info)
+
+    verify = sub.add_parser("verify", help="run the proof ledger of the source documents")
+    verify.add_argument("--doc", choices=["lasser", "yang", "sederberg"], help="only this document")
+    verify.add_argument("--json", action="store_true", help="print the ledger as JSON on stdout")
+    verify.add_argument("--fast", action="store_true", help="skip the claims marked slow")
+    verify.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
+    verify.add_argument("--trace", metavar="KEY", help="print the derivation trace of one claim (substring of its key)")
+    verify.add_argument("--out", default=None, help="directory for LEDGER.md and ledger.json (default: proofs/)")
+    verify.set_defaults(func=_lazy("exactcagd.apps.verify", "main"))
+
+    for name, helptext in (("plan", "show what a scene will compute and what is skipped"), ("run", "compute a scene")):
+        p = sub.add_parser(name, help=helptext)
+        p.add_argument("scene", help="scene file (.toml or .json)")
+        p.add_argument("--out", default="out", help="output directory (default: out)")
+        p.add_argument("--no-cache", action="store_true", help="ignore cached results")
+        p.set_defaults(func=_lazy("exactcagd.scenes.runner", f"cmd_{name}"))
+
+    ref = sub.add_parser("refdata", help="generate exact reference data (JSON Lines)")
+    ref.add_argument("kind", choices=["compose", "implicitize", "intersect"], help="what to generate")
+    ref.add_argument("--count", type=int, default=10)
+    ref.add_argument("--seed", type=int, default=0)
+    ref.add_argument("--degree", default="3", help="degree spec, e.g. 3 or 2,3,3 (N,l,m)")
+    ref.add_argument("--out", default="-", help="output file (default stdout)")
+    ref.add_argument("--jobs", type=int, default=2, help="local processes")
+    ref.add_argument("--scheduler", default=None, help="Dask scheduler address (runs on a Dask cluster)")
+    ref.add_argument("--dask", action="store_true", help="run on a local Dask cluster")
+    ref.set_defaults(func=_lazy("exactcagd.scenes.refdata", "cmd_refdata"))
+
+    bench = sub.add_parser("bench", help="run the benchmarks")
+    bench.add_argument("--quick", action="store_true")
+    bench.add_argument("--only", default=None, help="comma-separated benchmark topics")
+    bench.set_defaults(func=_lazy("exactcagd.apps.bench", "main"))
+    return parser
+
+
+def main(argv=None) -> int:
+    """Entry point of the ``exactcagd`` command."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # --version / --help / usage errors
+        return int(exc.code or 0)
+    if not getattr(args, "func", None):
+        parser.print_help()
+        return 0
+    try:
+        return int(args.func(args) or 0)
+    except ExactCAGDError as exc:
+        print(f"exactcagd: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

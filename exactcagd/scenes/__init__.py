@@ -1,0 +1,1 @@
+"""Scenes: files describing exact objects and wanted products; planner, runner, reference data."""

@@ -1,0 +1,85 @@
+"""Exact JSON for results: rationals as ``"p/q"`` strings, algebraic numbers with their
+defining polynomial and isolating interval, and correctly rounded float64 companions.
+
+>>> from exactcagd.scenes.serialize import to_json_value
+>>> from exactcagd.exact.scalars import to_rational
+>>> to_json_value(to_rational("1/3"))
+{'exact': '1/3', 'float': 0.3333333333333333}
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from ..exact.algebraic import RealAlgebraic
+from ..exact.scalars import Rational, rational_str, to_float
+from ..geometry.bezier_curve import BezierCurve
+from ..geometry.bezier_surface import BezierSurface
+
+__all__ = ["to_json_value", "atomic_write_text", "atomic_write_bytes", "dumps"]
+
+
+def _floats(nested):
+    if isinstance(nested, (list, tuple, np.ndarray)):
+        return [_floats(x) for x in nested]
+    return to_float(nested)
+
+
+def to_json_value(obj):
+    """Convert a result (curves, surfaces, numbers, dicts, lists) to JSON-ready data."""
+    if isinstance(obj, Rational):
+        return {"exact": rational_str(obj), "float": to_float(obj)}
+    if isinstance(obj, RealAlgebraic):
+        data = obj.to_dict()
+        data["float"] = float(obj)
+        return data
+    if isinstance(obj, BezierCurve):
+        data = obj.to_dict()
+        data["type"] = "bezier_curve"
+        data["control_points_float"] = _floats(obj.points_array())
+        if obj.is_rational:
+            data["weights_float"] = _floats(obj.weights_array())
+        return data
+    if isinstance(obj, BezierSurface):
+        data = obj.to_dict()
+        data["type"] = "bezier_surface"
+        return data
+    if isinstance(obj, dict):
+        return {str(k): to_json_value(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [to_json_value(v) for v in obj]
+    if isinstance(obj, (str, int, float, bool)) or obj is None:
+        return obj
+    if hasattr(obj, "to_dict"):
+        return to_json_value(obj.to_dict())
+    if type(obj).__module__.startswith("sympy"):
+        return str(obj.as_expr() if hasattr(obj, "as_expr") else obj)
+    raise TypeError(f"no exact JSON form for {type(obj).__name__}")
+
+
+def dumps(obj) -> str:
+    return json.dumps(to_json_value(obj), indent=1, allow_nan=False)
+
+
+def atomic_write_bytes(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` atomically (temporary file in the same folder, then rename)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def atomic_write_text(path: Path, text: str) -> None:
+    atomic_write_bytes(path, text.encode())
