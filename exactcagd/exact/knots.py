@@ -30,6 +30,9 @@ __all__ = [
     "extract_bezier",
     "multiplicity",
     "domain",
+    "blossom_de_boor",
+    "span_index",
+    "span_bezier",
 ]
 
 
@@ -156,3 +159,44 @@ def extract_bezier(points: np.ndarray, knots: tuple, degree: int) -> list[tuple[
         start = idx * p
         pieces.append(((a, b), points[start : start + p + 1].copy()))
     return pieces
+
+
+def blossom_de_boor(points: np.ndarray, knots: tuple, degree: int, k: int, args) -> object:
+    """Polar form of the spline piece on knot span ``k`` at ``args`` (notes 6.1, 6.8).
+
+    de Boor's algorithm with parameter ``args[r-1]`` at level ``r``; with all
+    arguments equal to ``t`` it is ordinary de Boor evaluation.
+    """
+    p = degree
+    d = [points[j + k - p] for j in range(p + 1)]
+    for r in range(1, p + 1):
+        u = args[r - 1]
+        for j in range(p, r - 1, -1):
+            i = j + k - p
+            alpha = (u - knots[i]) / (knots[i + p + 1 - r] - knots[i])
+            d[j] = (1 - alpha) * d[j - 1] + alpha * d[j]
+    return d[p]
+
+
+def span_index(knots: tuple, degree: int, piece: int) -> int:
+    """Knot index ``k`` (``knots[k] < knots[k+1]``) of the ``piece``-th non-empty span."""
+    lo, hi = domain(knots, degree)
+    count = -1
+    for k in range(degree, len(knots) - degree - 1):
+        if knots[k] < knots[k + 1]:
+            count += 1
+            if count == piece:
+                return k
+    raise DomainError(f"the spline has no span number {piece}")
+
+
+def span_bezier(points: np.ndarray, knots: tuple, degree: int, piece: int) -> tuple[tuple, np.ndarray]:
+    """Bézier coefficients of one span, by blossoming: ``b_i = f(a^{p-i}, b^i)``.
+
+    Touches only the ``p + 1`` control points of that span, so a caller that needs a
+    few patches of a large spline never pays for the whole extraction.
+    """
+    k = span_index(knots, degree, piece)
+    a, b = knots[k], knots[k + 1]
+    coeffs = [blossom_de_boor(points, knots, degree, k, [a] * (degree - i) + [b] * i) for i in range(degree + 1)]
+    return (a, b), np.stack(coeffs) if isinstance(coeffs[0], np.ndarray) else np.array(coeffs, dtype=object)

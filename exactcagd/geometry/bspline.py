@@ -278,24 +278,36 @@ class BSplineSurface:
         """Exact extraction into Bézier patches (notes 15.7; Yang et al. section 3).
 
         Returns ``{(i, j): ((u_span, v_span), BezierSurface)}`` for the non-empty knot
-        spans; ``u_spans``/``v_spans`` (sets of span indices) restrict the work to the
-        patches a caller needs.
+        spans.  With ``u_spans``/``v_spans`` (sets of span indices) only those patches
+        are built, each from its own ``(p+1) x (q+1)`` control points by blossoming
+        (:func:`exactcagd.exact.knots.span_bezier`); without them the whole net is
+        extracted by knot insertion.
         """
-        u_pieces = kn.extract_bezier(self._array(), self._knots_u, self._p)
+        array = self._array()
+        if u_spans is None and v_spans is None:
+            u_pieces = list(enumerate(kn.extract_bezier(array, self._knots_u, self._p)))
+        else:
+            n_u = len(self.breakpoints()[0]) - 1
+            wanted = sorted(set(range(n_u) if u_spans is None else u_spans))
+            u_pieces = [(i, kn.span_bezier(array, self._knots_u, self._p, i)) for i in wanted]
         out = {}
-        for i, (u_span, strip) in enumerate(u_pieces):
-            if u_spans is not None and i not in u_spans:
-                continue
-            v_pieces = kn.extract_bezier(np.moveaxis(strip, 1, 0), self._knots_v, self._q)
-            for j, (v_span, patch) in enumerate(v_pieces):
-                if v_spans is not None and j not in v_spans:
-                    continue
+        for i, (u_span, strip) in u_pieces:
+            moved = np.moveaxis(strip, 1, 0)
+            if v_spans is None:
+                v_pieces = list(enumerate(kn.extract_bezier(moved, self._knots_v, self._q)))
+            else:
+                v_pieces = [(j, kn.span_bezier(moved, self._knots_v, self._q, j)) for j in sorted(set(v_spans))]
+            for j, (v_span, patch) in v_pieces:
                 patch = np.moveaxis(patch, 0, 1)
                 surface = (
                     BezierSurface._trusted(patch, None) if self._weights is None else BezierSurface.from_homogeneous(patch)
                 )
                 out[(i, j)] = ((u_span, v_span), surface)
         return out
+
+    def bezier_patch(self, i: int, j: int) -> tuple[tuple, BezierSurface]:
+        """The single Bézier patch over the ``i``-th u span and ``j``-th v span."""
+        return self.to_bezier_patches(u_spans={i}, v_spans={j})[(i, j)]
 
     def to_dict(self) -> dict:
         out = {
