@@ -15,6 +15,7 @@ from .exact.scalars import float_policy, set_float_policy, to_rational  # noqa: 
 from .geometry.bezier_curve import BezierCurve  # noqa: E402
 from .geometry.bezier_surface import BezierSurface  # noqa: E402
 from .geometry.bspline import BSplineCurve, BSplineSurface  # noqa: E402
+from .composition import compose  # noqa: E402
 
 __all__ = [
     "__version__",
@@ -26,4 +27,5 @@ __all__ = [
     "BezierSurface",
     "BSplineCurve",
     "BSplineSurface",
+    "compose",
 ]

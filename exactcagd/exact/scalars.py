@@ -20,8 +20,11 @@ mpq(1,2)
 from __future__ import annotations
 
 import contextlib
+import importlib.abc
+import importlib.util
 import math
 import numbers
+import sys
 import threading
 from fractions import Fraction
 
@@ -199,7 +202,9 @@ def _from_sympy(x, policy: str, where: str) -> Rational:
     if isinstance(x, sympy.Float):
         return _from_float(float(x), policy, where) if x._prec <= 53 else _exact_mpf(x, policy, where)
     if isinstance(x, sympy.Basic) and x.is_number:
-        simplified = sympy.nsimplify(x, rational=False) if not x.is_Rational else x
+        # symbolic simplification only: nsimplify would *guess* a nearby rational
+        # from a 15-digit evaluation (1 + exp(-40) -> 1), a silent rounding
+        simplified = sympy.simplify(x)
         if simplified.is_Rational:
             return mpq(int(simplified.p), int(simplified.q))
         raise InexactInputError(f"{where}: {x} is not rational; exact rationals only")
@@ -294,3 +299,48 @@ def to_float(x: Rational) -> float:
     reference for the float companions of exact outputs.
     """
     return int(x.numerator) / int(x.denominator)
+
+
+# ----------------------------------------------------------------------------- sympy bridge
+def _mpq_to_sympy(q):
+    import sympy
+
+    return sympy.Rational(int(q.numerator), int(q.denominator))
+
+
+def _register_sympy_converter() -> None:
+    """Teach sympy that ``mpq`` is an exact rational.
+
+    Without this, ``sympify(mpq(1, 3))`` gives the Float 0.3333 (sympy falls back on
+    ``__float__``), so ``mpq * Symbol`` silently loses exactness.
+    """
+    from sympy.core.sympify import converter
+
+    converter[Rational] = _mpq_to_sympy
+
+
+class _SympyHook(importlib.abc.MetaPathFinder):
+    """Registers the converter right after ``sympy.core.sympify`` is first imported,
+    so importing exactcagd does not have to import sympy itself."""
+
+    def find_spec(self, name, path, target=None):
+        if name != "sympy.core.sympify":
+            return None
+        sys.meta_path.remove(self)
+        spec = importlib.util.find_spec(name)
+        if spec is None or spec.loader is None:  # pragma: no cover
+            return spec
+        original = spec.loader.exec_module
+
+        def exec_module(module):
+            original(module)
+            module.converter[Rational] = _mpq_to_sympy
+
+        spec.loader.exec_module = exec_module
+        return spec
+
+
+if "sympy.core.sympify" in sys.modules:
+    _register_sympy_converter()
+elif not any(isinstance(f, _SympyHook) for f in sys.meta_path):
+    sys.meta_path.insert(0, _SympyHook())

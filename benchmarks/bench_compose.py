@@ -1,0 +1,128 @@
+"""Benchmark of the exact composition F(K(t)) (Lasser & Bonneau, Theorems 1, 2).
+
+Tools, all producing the exact result:
+
+* route (b) ``compose(..., method="fast")`` -- scaled Bernstein forms in python-flint;
+* route (b) with ``strategy="bernstein"`` -- homogeneous de Casteljau with exact Bernstein
+  products (``exactcagd.exact.bernstein.product``);
+* route (a) ``method="lasser"`` -- the paper's sum of polar values times (7)/(16);
+* sympy: substitute ``u = u(t), v = v(t)`` into the surface's sympy expression and
+  ``expand`` (polynomial), or ``together`` and ``expand`` numerator and denominator (rational).  Sympy's result is in the power basis:
+  converting it to Bézier form is *not* timed (in sympy's favour).
+
+Run:  python benchmarks/bench_compose.py [--quick]
+Writes benchmarks/results/compose.md.
+"""
+
+from __future__ import annotations
+
+import random
+import sys
+from fractions import Fraction as Fr
+from math import comb
+from pathlib import Path
+
+import sympy
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from benchmarks._common import markdown_table, measure, parse_quick, write_result  # noqa: E402
+from exactcagd import BezierCurve, BezierSurface, compose  # noqa: E402
+
+
+def instance(l, m, N, rational, seed=0):
+    rng = random.Random(seed + 100 * l + 10 * m + N)
+
+    def q():
+        return Fr(rng.randint(0, 1000), 1000)
+
+    net = [[[q(), q(), q()] for _ in range(m + 1)] for _ in range(l + 1)]
+    ws = [[Fr(rng.randint(1, 9), rng.randint(1, 9)) for _ in range(m + 1)] for _ in range(l + 1)] if rational else None
+    pts = [[q(), q()] for _ in range(N + 1)]
+    wc = [Fr(rng.randint(1, 9), rng.randint(1, 9)) for _ in range(N + 1)] if rational else None
+    return BezierSurface(net, ws), BezierCurve(pts, wc)
+
+
+def sympy_compose(surface, curve):
+    u, v, t = sympy.symbols("u v t")
+    expr = surface.to_sympy(u, v)
+    kt = curve.to_sympy(t)
+
+    def run():
+        if surface.is_rational or curve.is_rational:
+            out = []
+            for e in expr:
+                num, den = sympy.fraction(sympy.together(e.subs({u: kt[0], v: kt[1]}, simultaneous=True)))
+                out.append((sympy.expand(num), sympy.expand(den)))
+            return out
+        return [sympy.expand(e.subs({u: kt[0], v: kt[1]}, simultaneous=True)) for e in expr]
+
+    return run
+
+
+def lasser_work(l, m, N) -> int:
+    """Number of (u-multiset, v-multiset) polar values route (a) evaluates."""
+    return comb(N + l, l) * comb(N + m, m)
+
+
+def main():
+    quick = parse_quick(__doc__.splitlines()[0])
+    cases = [
+        ("bicubic x cubic", 3, 3, 3, False),
+        ("bicubic x cubic, rational", 3, 3, 3, True),
+        ("biquintic x linear", 5, 5, 1, False),
+        ("biquintic x quadratic", 5, 5, 2, False),
+        ("biquintic x cubic", 5, 5, 3, False),
+        ("biquintic x cubic, rational", 5, 5, 3, True),
+        ("biquintic x quartic (degree 40)", 5, 5, 4, False),
+        ("bisextic x quartic (degree 48)", 6, 6, 4, False),
+        ("biseptic x quintic (degree 70)", 7, 7, 5, False),
+        ("biseptic x quintic, rational (degree 70)", 7, 7, 5, True),
+    ]
+    if not quick:
+        cases += [("bidecic x quintic (degree 100)", 10, 10, 5, False), ("bidecic x quintic, rational (degree 100)", 10, 10, 5, True)]
+    lasser_limit = 4000 if quick else 40000
+    sympy_degree_limit = 40 if quick else 70
+    sympy_rational_limit = 18 if quick else 30
+    rows = []
+    ratios = []
+    for name, l, m, N, rational in cases:
+        surface, curve = instance(l, m, N, rational)
+        degree = N * (l + m)
+        fast = measure(lambda: compose(surface, curve, shortcut=False), repeat=7, budget=5)
+        bern = measure(lambda: compose(surface, curve, shortcut=False, strategy="bernstein"), repeat=3, budget=10)
+        if lasser_work(l, m, N) <= lasser_limit:
+            lasser = measure(lambda: compose(surface, curve, method="lasser", shortcut=False), repeat=2, budget=20)
+            lasser_txt, lasser_ratio = lasser.fmt(), f"{lasser.median / fast.median:.0f}x"
+        else:
+            lasser_txt, lasser_ratio = f"skipped ({lasser_work(l, m, N)} polar-value pairs)", "-"
+        sym_ok = degree <= (sympy_rational_limit if rational else sympy_degree_limit)
+        if sym_ok:
+            sym = measure(sympy_compose(surface, curve), repeat=2 if degree < 30 else 1, budget=30)
+            sym_txt, sym_ratio = sym.fmt(), f"{sym.median / fast.median:.0f}x"
+            ratios.append((name, sym.median / fast.median))
+        else:
+            sym_txt, sym_ratio = "skipped (too slow for this mode)", "-"
+        rows.append([name, f"({l},{m}) x {N}", degree, fast.fmt(), bern.fmt(), lasser_txt, sym_txt, f"{bern.median / fast.median:.0f}x", lasser_ratio, sym_ratio])
+        print(rows[-1], flush=True)
+    table = markdown_table(
+        ["case", "(l,m) x N", "degree N(l+m)", "route (b) flint", "route (b) Bernstein products", "route (a) Lasser", "sympy subs+expand", "bernstein/fast", "lasser/fast", "sympy/fast"],
+        rows,
+    )
+    summary = ", ".join(f"{n}: {r:.0f}x" for n, r in ratios)
+    body = (
+        f"Mode: {'quick' if quick else 'full'}. Median (min-max) of repeated runs; random exact inputs "
+        "(coordinates k/1000, weights p/q with 1 <= p, q <= 9); `shortcut=False` (general formula).\n\n"
+        + table
+        + "\n\nRatios are slower-tool time / route (b) flint time measured in the same run. "
+        f"Sympy's output is in the power basis (its conversion to Bézier form is not timed). sympy/fast: {summary}.\n"
+        "Route (a) is skipped when it would evaluate more than "
+        f"{lasser_limit} (u-multiset, v-multiset) polar-value pairs; sympy is skipped above degree {sympy_degree_limit} "
+        f"(polynomial) / {sympy_rational_limit} (rational) in this mode.\n"
+    )
+    path = write_result("compose", "Exact composition F(K(t)): route (a) vs route (b) vs sympy", body)
+    print(f"wrote {path}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,331 @@
+"""G1 cubic spline approximation of a trim curve, Lasser & Bonneau (000) section VIII.
+
+For a segment of the exact curve ``F(t) = sum B_R B^{rN}_R(t)`` the cubic
+``X(t) = sum b_k B^3_k(t)`` (19) has fixed ends and end tangents (20)::
+
+    b_0 = B_0,   b_1 = B_0 + lambda_1 (B_1 - B_0),
+    b_3 = B_rN,  b_2 = B_rN + lambda_2 (B_{rN-1} - B_rN),
+
+and ``lambda_1, lambda_2`` minimize (21)
+``d = sum_l | D_l - lambda_1 (B_1 - B_0) B^3_1(t_l) - lambda_2 (B_{rN-1} - B_rN) B^3_2(t_l) |^2``
+with ``D_l = P_l - B_0 (B^3_0 + B^3_1)(t_l) - B_rN (B^3_2 + B^3_3)(t_l)`` (22), a 2x2 linear
+system.  Parameter correction (as in the paper: the points move on ``F``): ``t_l* `` solves
+``<F(t*) - X(t_l), X'(t_l)> = 0`` (Newton steps with the exact derivative of ``F``), so the
+error vectors ``d_l = F(t_l*) - X(t_l)`` become perpendicular to ``X``; then (21) is solved
+again.  If the tolerance is not met, ``F`` is split (exactly, de Casteljau) at the point of
+maximal error and both halves are approximated (G1 joints: the subdivided control polygons
+are collinear at the split point, so ``b_2, b_3 = b'_0, b'_1`` are collinear exactly).
+
+Floats are used inside the fit; the returned control points are exact rationals
+(``lambda`` rounded to a short rational, the rest exact), and every segment carries a
+*certified* upper bound of its Hausdorff distance to the exact curve
+(:func:`exactcagd.composition.distance_bound.distance_bound`), which decides acceptance.
+If the paper's degenerate case ``B_1 = B_0`` occurs, the first control point different
+from ``B_0`` gives the tangent direction.
+
+>>> from exactcagd import BezierCurve, BezierSurface
+>>> F = BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+>>> result = approximate_cubic(F, BezierCurve([[0, 0], [1, "1/2"], [0, 1]]), tol="1/100")
+>>> result.tolerance_met, len(result.segments) >= 1
+(True, True)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import numpy as np
+from gmpy2 import mpq
+
+from ..errors import InputError, NotSupportedError
+from ..exact.scalars import rational_str, to_rational
+from ..geometry.bezier_curve import BezierCurve
+from ..geometry.bezier_surface import BezierSurface
+from .distance_bound import distance_bound
+
+__all__ = ["approximate_cubic", "approximate_cubic_curve", "CubicApproximation", "CubicSegment", "fit_cubic"]
+
+
+# ----------------------------------------------------------------------------- float helpers
+def _bernstein_matrix(n: int, t: np.ndarray) -> np.ndarray:
+    from math import comb
+
+    t = np.asarray(t, dtype=float)[:, None]
+    i = np.arange(n + 1)[None, :]
+    coef = np.array([float(comb(n, k)) for k in range(n + 1)])[None, :]
+    return coef * t**i * (1 - t) ** (n - i)
+
+
+class _FloatCurve:
+    """Float evaluation of an exact (rational) Bézier curve and its derivative."""
+
+    def __init__(self, curve: BezierCurve):
+        hom = curve.homogeneous()
+        self.hom = np.vectorize(float, otypes=[float])(hom)
+        self.n = hom.shape[0] - 1
+        self.dhom = self.n * (self.hom[1:] - self.hom[:-1]) if self.n > 0 else np.zeros_like(self.hom)
+
+    def __call__(self, t):
+        h = _bernstein_matrix(self.n, t) @ self.hom
+        return h[:, :-1] / h[:, -1:]
+
+    def derivative(self, t):
+        h = _bernstein_matrix(self.n, t) @ self.hom
+        if self.n == 0:
+            return np.zeros((len(np.atleast_1d(t)), self.hom.shape[1] - 1))
+        dh = _bernstein_matrix(self.n - 1, t) @ self.dhom
+        w, dw = h[:, -1:], dh[:, -1:]
+        return (dh[:, :-1] * w - h[:, :-1] * dw) / w**2
+
+
+def _cubic_float(b: np.ndarray, t: np.ndarray):
+    m = _bernstein_matrix(3, t)
+    d = _bernstein_matrix(2, t) @ (3 * (b[1:] - b[:-1]))
+    return m @ b, d
+
+
+# ----------------------------------------------------------------------------- results
+@dataclass
+class CubicSegment:
+    """One cubic of the spline: ``curve`` approximates ``F`` on the parameter ``interval``."""
+
+    curve: BezierCurve
+    interval: tuple
+    distance_bound: mpq
+    sampled_error: float
+    reparametrization: tuple
+    lambdas: tuple
+
+    def to_dict(self) -> dict:
+        return {
+            "curve": self.curve.to_dict(),
+            "interval": [rational_str(x) for x in self.interval],
+            "distance_bound": rational_str(self.distance_bound),
+            "distance_bound_float": float(self.distance_bound),
+            "sampled_error": self.sampled_error,
+            "reparametrization": [rational_str(x) for x in self.reparametrization],
+            "lambdas": [rational_str(x) for x in self.lambdas],
+        }
+
+
+@dataclass
+class CubicApproximation:
+    """A G1 cubic Bézier spline approximating ``F(K(t))`` with a certified distance.
+
+    ``distance_bound`` (exact rational) is an upper bound of the Hausdorff distance between
+    the exact curve and the spline (maximum over segments); ``tolerance_met`` says whether
+    it is <= ``tolerance``.  ``sampled_error`` is the largest float-sampled error (a lower
+    estimate of the parametric error, for comparison only).
+    """
+
+    segments: list
+    tolerance: mpq
+    distance_bound: mpq
+    tolerance_met: bool
+    sampled_error: float
+    exact_curves: list = field(default_factory=list)
+
+    @property
+    def curves(self) -> list:
+        return [s.curve for s in self.segments]
+
+    def g1_joints(self) -> list:
+        """Exact check at every joint: ``b_2, b_3 = b'_0, b'_1`` collinear, same direction."""
+        out = []
+        for left, right in zip(self.segments[:-1], self.segments[1:]):
+            a, b = left.curve.points_array(), right.curve.points_array()
+            u, v = a[3] - a[2], b[1] - b[0]
+            same_point = bool(np.all(a[3] == b[0]))
+            dot = sum(x * y for x, y in zip(u, v))
+            uu, vv = sum(x * x for x in u), sum(x * x for x in v)
+            collinear = dot * dot == uu * vv
+            out.append(same_point and collinear and dot >= 0)
+        return out
+
+    def to_dict(self) -> dict:
+        return {
+            "tolerance": rational_str(self.tolerance),
+            "distance_bound": rational_str(self.distance_bound),
+            "distance_bound_float": float(self.distance_bound),
+            "tolerance_met": self.tolerance_met,
+            "sampled_error": self.sampled_error,
+            "segments": [s.to_dict() for s in self.segments],
+        }
+
+
+# ----------------------------------------------------------------------------- one cubic
+def _end_direction(points: np.ndarray, from_end: bool):
+    seq = points[::-1] if from_end else points
+    for p in seq[1:]:
+        if np.any(p != seq[0]):
+            return p - seq[0]
+    return None
+
+
+def _short_rational(x: float) -> mpq:
+    f = Fraction(x).limit_denominator(2**24)
+    return mpq(f.numerator, f.denominator)
+
+
+def fit_cubic(F: BezierCurve, samples: int | None = None, iterations: int = 8):
+    """Fit one cubic to the exact curve ``F`` on [0, 1] by (20)-(22) with parameter correction.
+
+    Returns ``(cubic, lambdas, t_star, t_cubic, errors)``: the exact cubic, the exact
+    ``(lambda_1, lambda_2)``, the corrected parameters on ``F``, the fixed parameters on ``X``
+    and the final error-vector lengths ``|d_l|`` (floats).
+    """
+    pts = F.points_array()
+    b0, b3 = pts[0], pts[-1]
+    t0dir, t1dir = _end_direction(pts, False), _end_direction(pts, True)
+    n = F.degree
+    L = samples or max(24, 2 * n + 2)
+    t = np.linspace(0.0, 1.0, L + 1)
+    tstar = t.copy()
+    fF = _FloatCurve(F)
+    fb0, fb3 = np.array([float(x) for x in b0]), np.array([float(x) for x in b3])
+    d0 = np.zeros_like(fb0) if t0dir is None else np.array([float(x) for x in t0dir])
+    d1 = np.zeros_like(fb0) if t1dir is None else np.array([float(x) for x in t1dir])
+    basis = _bernstein_matrix(3, t)
+    a1, a2 = d0[None, :] * basis[:, 1:2], d1[None, :] * basis[:, 2:3]
+    lam = np.array([1.0 / 3.0, 1.0 / 3.0])
+    for it in range(iterations + 1):
+        P = fF(tstar)
+        D = P - np.outer(basis[:, 0] + basis[:, 1], fb0) - np.outer(basis[:, 2] + basis[:, 3], fb3)
+        G = np.array([[np.sum(a1 * a1), np.sum(a1 * a2)], [np.sum(a1 * a2), np.sum(a2 * a2)]])
+        rhs = np.array([np.sum(D * a1), np.sum(D * a2)])
+        lam = np.linalg.lstsq(G, rhs, rcond=None)[0] if np.any(G) else lam
+        if it == iterations:
+            break
+        ctrl = np.array([fb0, fb0 + lam[0] * d0, fb3 + lam[1] * d1, fb3])
+        X, dX = _cubic_float(ctrl, t)
+        for _ in range(2):  # Newton on <F(t*) - X(t_l), X'(t_l)> = 0
+            Fv, dF = fF(tstar), fF.derivative(tstar)
+            g = np.sum((Fv - X) * dX, axis=1)
+            dg = np.sum(dF * dX, axis=1)
+            step = np.where(np.abs(dg) > 1e-300, g / np.where(dg == 0, 1, dg), 0.0)
+            tstar = np.clip(tstar - step, 0.0, 1.0)
+            tstar[0], tstar[-1] = 0.0, 1.0
+    lam1, lam2 = (_short_rational(float(x)) for x in lam)
+    zero = b0 * 0
+    p1 = b0 + lam1 * (zero if t0dir is None else t0dir)
+    p2 = b3 + lam2 * (zero if t1dir is None else t1dir)
+    cubic = BezierCurve._trusted(np.array([b0, p1, p2, b3], dtype=object), None)
+    ctrl = np.array([[float(x) for x in p] for p in (b0, p1, p2, b3)])
+    X, _ = _cubic_float(ctrl, t)
+    errors = np.linalg.norm(fF(tstar) - X, axis=1)
+    return cubic, (lam1, lam2), tstar, t, errors
+
+
+def _reparametrization(tstar: np.ndarray, t: np.ndarray, degree: int = 3) -> list:
+    """Exact Bernstein coefficients of ``phi`` with ``phi(t*_l) ~ t_l``, ``phi(0)=0``, ``phi(1)=1``.
+
+    Least squares for the interior coefficients; falls back to the identity when a
+    coefficient leaves [0, 1] (then ``phi`` would not map [0, 1] into [0, 1]).
+    """
+    M = _bernstein_matrix(degree, tstar)
+    rhs = t - M[:, -1]
+    coef = np.linalg.lstsq(M[:, 1:-1], rhs, rcond=None)[0] if degree > 1 else np.array([])
+    exact = [mpq(0)] + [_short_rational(float(c)) for c in coef] + [mpq(1)]
+    if all(0 <= c <= 1 for c in exact):
+        return exact
+    return [mpq(0), mpq(1)]
+
+
+def _split_parameter(tstar: np.ndarray, errors: np.ndarray) -> mpq:
+    k = int(np.argmax(errors))
+    x = float(np.clip(tstar[k], 0.1, 0.9))
+    return mpq(Fraction(x).limit_denominator(1024).numerator, Fraction(x).limit_denominator(1024).denominator)
+
+
+def _approximate_piece(F: BezierCurve, interval, tol: mpq, max_segments: int, options, out: list) -> None:
+    cubic, lams, tstar, t, errors = fit_cubic(F, options.get("samples"), options.get("iterations", 8))
+    phi = _reparametrization(tstar, t, options.get("reparam_degree", 3))
+    bound = distance_bound(F, cubic, phi, target=tol)
+    identity_bound = None
+    if bound > tol and phi != [mpq(0), mpq(1)]:
+        identity_bound = distance_bound(F, cubic, target=tol)
+        if identity_bound < bound:
+            bound, phi = identity_bound, [mpq(0), mpq(1)]
+    if bound <= tol or options["splits_left"] <= 0:
+        if options.get("tight", True):  # the acceptance test stopped early: tighten the report
+            bound = min(bound, distance_bound(F, cubic, phi, rel=0.05, max_leaves=64))
+        fphi = _bernstein_matrix(len(phi) - 1, np.linspace(0, 1, 201)) @ np.array([float(x) for x in phi])
+        dense = np.linspace(0, 1, 201)
+        ctrl = np.array([[float(x) for x in p] for p in cubic.points_array()])
+        X, _ = _cubic_float(ctrl, fphi)
+        sampled = float(np.max(np.linalg.norm(_FloatCurve(F)(dense) - X, axis=1)))
+        out.append(CubicSegment(cubic, interval, bound, sampled, tuple(phi), lams))
+        return
+    options["splits_left"] -= 1
+    s = _split_parameter(tstar, errors)
+    left, right = F.subdivide(s)
+    a, b = interval
+    mid = a + s * (b - a)
+    _approximate_piece(left, (a, mid), tol, max_segments, options, out)
+    _approximate_piece(right, (mid, b), tol, max_segments, options, out)
+
+
+def approximate_cubic_curve(F: BezierCurve, tol, *, interval=(0, 1), max_segments: int = 64, samples: int | None = None, iterations: int = 8, reparam_degree: int = 3) -> CubicApproximation:
+    """G1 cubic spline approximation of an exact Bézier curve ``F`` (section VIII).
+
+    Parameters
+    ----------
+    F : BezierCurve
+        The exact curve (e.g. ``compose(surface, curve)``), polynomial or rational.
+    tol : number
+        Required certified distance (exact rational; floats are converted exactly).
+    interval : (a, b)
+        Global parameter interval that ``F``'s [0, 1] stands for (for reporting).
+    max_segments : int
+        Stop splitting at this many cubics (``tolerance_met`` then may be false).
+    samples, iterations, reparam_degree
+        ``L`` of (21) (default ``max(24, 2 rN + 2)``), parameter-correction rounds, degree of
+        the reparametrization used for the certificate.
+    """
+    if not isinstance(F, BezierCurve):
+        raise InputError(f"expected a BezierCurve, got {type(F).__name__}")
+    tol = to_rational(tol, where="tol")
+    if tol <= 0:
+        raise InputError("tol must be positive")
+    segments: list = []
+    options = {"samples": samples, "iterations": iterations, "reparam_degree": reparam_degree, "splits_left": max_segments - 1}
+    a, b = (to_rational(x) for x in interval)
+    _approximate_piece(F, (a, b), tol, max_segments, options, segments)
+    bound = max(s.distance_bound for s in segments)
+    return CubicApproximation(segments, tol, bound, bound <= tol, max(s.sampled_error for s in segments), [F])
+
+
+def approximate_cubic(surface, curve, tol, *, max_segments: int = 64, samples: int | None = None, iterations: int = 8, reparam_degree: int = 3, method: str = "fast") -> CubicApproximation:
+    """G1 cubic Bézier spline approximation of the trim curve ``F(K(t))`` (section VIII).
+
+    ``surface``/``curve`` as for :func:`exactcagd.composition.compose` (Bézier) or
+    :func:`exactcagd.composition.compose_spline` (B-spline/NURBS).  Each exact piece of
+    ``F(K(t))`` is approximated by :func:`approximate_cubic_curve`; spline pieces whose
+    parameter interval has an irrational end are not supported (the exact end point is
+    irrational, so no cubic with rational control points interpolates it).
+
+    Returns
+    -------
+    CubicApproximation
+        ``segments`` (exact cubics, global parameter intervals, certified bounds),
+        ``distance_bound`` (certified Hausdorff bound of the whole spline), ``tolerance_met``.
+    """
+    from .core import compose
+    from .splines import compose_spline
+
+    options = {"max_segments": max_segments, "samples": samples, "iterations": iterations, "reparam_degree": reparam_degree}
+    if isinstance(surface, BezierSurface) and isinstance(curve, BezierCurve):
+        return approximate_cubic_curve(compose(surface, curve, method=method), tol, **options)
+    spline = compose_spline(surface, curve, method=method, continuity=False)
+    inexact = [p for p in spline.pieces if not p.exact]
+    if inexact:
+        raise NotSupportedError(
+            f"{len(inexact)} piece(s) of F(K(t)) end at irrational parameters (e.g. {inexact[0].interval[0]}); "
+            "a cubic with rational control points cannot interpolate their exact end points"
+        )
+    parts = [approximate_cubic_curve(p.curve, tol, interval=p.interval, **options) for p in spline.pieces]
+    segments = [s for part in parts for s in part.segments]
+    bound = max(s.distance_bound for s in segments)
+    tol = to_rational(tol)
+    return CubicApproximation(segments, tol, bound, bound <= tol, max(p.sampled_error for p in parts), [p.curve for p in spline.pieces])
