@@ -31,7 +31,7 @@ CAPABILITIES = [
     ("exactcagd.reparam", "Mobius / quadratic / cubic reparameterization of rational surfaces (Yang et al.)"),
     ("exactcagd.curves_on_surfaces", "G1 parabola / hyperbola / polyline curves on NURBS surfaces (Yang et al.)"),
     ("exactcagd.algebra", "resultants, implicitization, inversion, moving lines, Groebner bases"),
-    ("exactcagd.numeric.evaluate", "float evaluators with certified error bounds"),
+    ("exactcagd.numeric.evaluation", "float evaluators with certified error bounds"),
     ("exactcagd.numeric.interval", "interval arithmetic and interval Bezier curves"),
     ("exactcagd.numeric.intersect", "curve intersection: subdivision, interval, Bezier clipping, exact"),
     ("exactcagd.scenes", "scene files, lazy planner, runner, reference data"),

@@ -320,8 +320,9 @@ def approximate_cubic(surface, curve, tol, *, max_segments: int = 64, samples: i
     spline = compose_spline(surface, curve, method=method, continuity=False)
     inexact = [p for p in spline.pieces if not p.exact]
     if inexact:
+        example = next(t for t in inexact[0].interval if not isinstance(t, mpq))
         raise NotSupportedError(
-            f"{len(inexact)} piece(s) of F(K(t)) end at irrational parameters (e.g. {inexact[0].interval[0]}); "
+            f"{len(inexact)} piece(s) of F(K(t)) end at irrational parameters (e.g. {example}); "
             "a cubic with rational control points cannot interpolate their exact end points"
         )
     parts = [approximate_cubic_curve(p.curve, tol, interval=p.interval, **options) for p in spline.pieces]

@@ -1,6 +1,6 @@
 """Fast float64 sampling of curves and surfaces for pictures and previews.
 
-No error bounds here (see :mod:`exactcagd.numeric.evaluate` for certified values):
+No error bounds here (see :mod:`exactcagd.numeric.evaluation` for certified values):
 this is the vectorized Cox-de Boor basis (notes 6.14) evaluated in floats for many
 parameters at once, with Bézier objects treated as single-span B-splines.
 

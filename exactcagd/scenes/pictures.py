@@ -64,21 +64,27 @@ def _draw_surface(ax2, ax3, name, surface, lines: int = 24) -> None:
 
 def _draw_exact_curves(ax3, label, curves, color=None) -> None:
     first = True
-    for i, curve in enumerate(curves):
-        pts = sample_curve(curve, np.linspace(0, 1, 200))
+    for i, (curve, (s0, s1)) in enumerate(curves):
+        pts = sample_curve(curve, np.linspace(s0, s1, 200))
         c = color or f"C{i % 10}"
         ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2] if pts.shape[1] > 2 else 0 * pts[:, 0], color=c, lw=2, label=label if first else None)
         first = False
 
 
 def _curves_of(result) -> list:
+    """``[(BezierCurve, (s0, s1))]``: exact result curves and the float parameter range to draw
+    (a spline piece with an irrational end is drawn only over its exact interval)."""
     if isinstance(result, list):
-        return [c for c in result if isinstance(c, BezierCurve)]
-    for attr in ("segments", "pieces"):
-        items = getattr(result, attr, None)
-        if items is not None:
-            return [getattr(item, "curve", item) for item in items]
-    return []
+        return [(c, (0.0, 1.0)) for c in result if isinstance(c, BezierCurve)]
+    out = []
+    for item in getattr(result, "pieces", None) or getattr(result, "segments", None) or []:
+        curve = getattr(item, "curve", item)
+        if hasattr(item, "local_interval"):
+            s0, s1 = item.local_interval()
+            out.append((curve, (float(s0), float(s1))))
+        elif isinstance(curve, BezierCurve):
+            out.append((curve, (0.0, 1.0)))
+    return out
 
 
 def draw(product: dict, objects: dict, results: dict):
