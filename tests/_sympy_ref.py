@@ -38,8 +38,10 @@ def weight_lists(n_points):
 # ---------------------------------------------------------------- conversions
 def R(x) -> sp.Rational:
     """Exact number (mpq, Fraction, int, str) -> sympy Rational."""
+    if isinstance(x, sp.Rational):
+        return x
     if isinstance(x, sp.Basic):
-        return sp.nsimplify(x)
+        raise TypeError(f"not an exact rational: {x!r}")  # (sympy.nsimplify mangles large Rationals)
     f = Fraction(str(x)) if isinstance(x, str) else Fraction(int(x.numerator), int(x.denominator))
     return sp.Rational(f.numerator, f.denominator)
 
@@ -73,10 +75,7 @@ def rational_curve(points, weights, t=T):
     """The rational Bézier curve sum w_i P_i B_i / sum w_i B_i as a list of sympy expressions."""
     n = len(points) - 1
     w = sum(R(weights[i]) * B(n, i, t) for i in range(n + 1))
-    return [
-        sp.cancel(sum(R(weights[i]) * R(points[i][k]) * B(n, i, t) for i in range(n + 1)) / w)
-        for k in range(len(points[0]))
-    ]
+    return [sum(R(weights[i]) * R(points[i][k]) * B(n, i, t) for i in range(n + 1)) / w for k in range(len(points[0]))]
 
 
 def tensor_sum(net, u=U, v=V, weights=None):
@@ -93,8 +92,20 @@ def tensor_sum(net, u=U, v=V, weights=None):
 
 
 def same_function(a, b) -> bool:
-    """Exact identity test of two rational functions."""
-    return sp.simplify(sp.cancel(sp.together(a - b))) == 0
+    """Exact identity test of two rational functions (numerator of the difference vanishes)."""
+    na, da = sp.fraction(sp.together(a))
+    nb, db = sp.fraction(sp.together(b))
+    return sp.expand(na * db - nb * da) == 0
+
+
+def bernstein_coeffs(expr, n, t=T):
+    """Bernstein coefficients of degree n of a polynomial expression, from its power
+    coefficients a_k: c_i = sum_{k<=i} C(i,k)/C(n,k) a_k (notes 3.3, inverted)."""
+    poly = sp.Poly(sp.expand(expr), t)
+    a = poly.all_coeffs()[::-1] if not poly.is_zero else [0]
+    assert len(a) - 1 <= n
+    a = a + [0] * (n + 1 - len(a))
+    return [sum(sp.binomial(i, k) / sp.binomial(n, k) * sp.Rational(a[k]) for k in range(i + 1)) for i in range(n + 1)]
 
 
 def poly_eq(a, b, *gens) -> bool:

@@ -44,6 +44,8 @@ MPQ = type(mpq(0))
         (sp.Rational(-4, 6), Fraction(-2, 3)),
         (sp.Integer(9), Fraction(9)),
         (sp.sqrt(4) / 6, Fraction(1, 3)),  # a sympy number that is rational
+        (sp.sqrt(2) * sp.sqrt(8), Fraction(4)),
+        (sp.cos(1) ** 2 + sp.sin(1) ** 2, Fraction(1)),  # exactly 1, proved symbolically
         (np.int64(-5), Fraction(-5)),
         (np.uint8(200), Fraction(200)),
     ],
@@ -185,7 +187,21 @@ def test_nan_inf_always_rejected(x, policy):
         to_rational(x, policy=policy)
 
 
-@pytest.mark.parametrize("x", [sp.sqrt(2), sp.pi, sp.pi - sp.Rational(355, 113), sp.exp(-40), sp.I])
+@pytest.mark.parametrize(
+    "x",
+    [
+        sp.sqrt(2),
+        sp.pi,
+        sp.pi - sp.Rational(355, 113),
+        sp.exp(-40),
+        sp.I,
+        # irrational but within 1e-15 of a rational: must not be "recognized" as that rational
+        # (regression: sympy.nsimplify used to turn 1 + exp(-40) into 1)
+        1 + sp.exp(-40),
+        sp.Rational(1, 3) + sp.exp(-100),
+        sp.sqrt(2) - sp.Rational(14142135623730951, 10**16),
+    ],
+)
 def test_irrational_sympy_numbers_rejected(x):
     with pytest.raises(InexactInputError):
         to_rational(x)

@@ -56,6 +56,31 @@ def _sign_at(poly: flint.fmpz_poly, x: mpq) -> int:
     return (value > 0) - (value < 0)
 
 
+def _normal_factor(poly: flint.fmpz_poly, lo: mpq, hi: mpq) -> flint.fmpz_poly:
+    """The irreducible, primitive factor with positive leading coefficient of ``poly``
+    whose root the interval ``[lo, hi]`` isolates (a sign change for degree >= 2)."""
+    if not isinstance(poly, flint.fmpz_poly):
+        poly = flint.fmpz_poly([int(c) for c in poly])
+    if poly.degree() < 1:
+        raise InputError(f"a constant polynomial ({poly}) defines no algebraic number")
+    if lo > hi:
+        raise InputError(f"empty isolating interval ({lo}, {hi})")
+    _, factors = poly.factor()
+    candidates = []
+    for factor, _ in factors:
+        if factor.coeffs()[-1] < 0:
+            factor = -factor
+        if factor.degree() == 1:
+            c0, c1 = (int(c) for c in factor.coeffs())
+            if lo <= mpq(-c0, c1) <= hi:
+                candidates.append(factor)
+        elif _sign_at(factor, lo) * _sign_at(factor, hi) < 0:
+            candidates.append(factor)
+    if len(candidates) != 1:
+        raise InputError(f"the interval ({lo}, {hi}) does not isolate one root of {poly}")
+    return candidates[0]
+
+
 @total_ordering
 class RealAlgebraic:
     """A real algebraic number, carried exactly.
@@ -70,9 +95,13 @@ class RealAlgebraic:
 
     __slots__ = ("poly", "lo", "hi")
 
-    def __init__(self, poly: flint.fmpz_poly, lo, hi):
-        self.poly = poly
+    def __init__(self, poly: flint.fmpz_poly, lo, hi, *, _checked: bool = False):
         self.lo, self.hi = mpq(lo), mpq(hi)
+        if not _checked:
+            # exact comparison relies on the normal form (irreducible, primitive, positive
+            # leading coefficient): a non-normalized polynomial made == loop forever
+            poly = _normal_factor(poly, self.lo, self.hi)
+        self.poly = poly
         if poly.degree() == 1:
             c0, c1 = (int(c) for c in poly.coeffs())
             self.lo = self.hi = mpq(-c0, c1)
@@ -80,7 +109,7 @@ class RealAlgebraic:
     @classmethod
     def from_rational(cls, value) -> "RealAlgebraic":
         q = to_rational(value)
-        return cls(flint.fmpz_poly([-int(q.numerator), int(q.denominator)]), q, q)
+        return cls(flint.fmpz_poly([-int(q.numerator), int(q.denominator)]), q, q, _checked=True)
 
     @property
     def is_rational(self) -> bool:
@@ -123,8 +152,10 @@ class RealAlgebraic:
     def __float__(self) -> float:
         if self.is_rational:
             return float(self.lo)
-        scale = max(abs(self.lo), abs(self.hi), mpq(1, 2**1000))
-        self.refine(scale * mpq(1, 2**60))
+        # relative width 2^-60 of the *refined* interval (a wide isolating interval such as
+        # (0, 2^62) says nothing about the size of the root itself)
+        while self.hi - self.lo > max(abs(self.lo), abs(self.hi), mpq(1, 2**1000)) * mpq(1, 2**60):
+            self.refine((self.hi - self.lo) / 2)
         return float((self.lo + self.hi) / 2)
 
     def _cmp_rational(self, q: mpq) -> int:
@@ -221,7 +252,7 @@ def _isolate_factor(factor: flint.fmpz_poly) -> list[RealAlgebraic]:
     printed data stay small.
     """
     if factor.degree() == 1:
-        return [RealAlgebraic(factor, 0, 0)]
+        return [RealAlgebraic(factor, 0, 0, _checked=True)]
     balls = []
     for root, _ in factor.complex_roots():
         if root.imag.is_zero():
@@ -236,7 +267,7 @@ def _isolate_factor(factor: flint.fmpz_poly) -> list[RealAlgebraic]:
                 break
         if _sign_at(factor, a) * _sign_at(factor, b) >= 0:  # pragma: no cover - flint guarantees
             raise ArithmeticError("root isolation failed a sign check")
-        out.append(RealAlgebraic(factor, a, b))
+        out.append(RealAlgebraic(factor, a, b, _checked=True))
     return out
 
 

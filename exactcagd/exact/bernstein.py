@@ -22,7 +22,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 import numpy as np
-from gmpy2 import bincoef, mpq
+from gmpy2 import bincoef, mpq, mpz
 
 from ..errors import DegreeError, InputError
 from .scalars import to_rational, to_rational_array
@@ -142,12 +142,20 @@ def elevate(c: np.ndarray, r: int = 1) -> np.ndarray:
 
 
 def _zeros_to_mpq(a: np.ndarray) -> np.ndarray:
-    """Replace stray Python ints (from empty sums) with mpq so types stay uniform."""
+    """Replace stray Python ints (from empty sums) with mpq so types stay uniform.
+
+    Other exact entry types (e.g. :class:`exactcagd.exact.quadratic.QuadraticNumber`,
+    sympy expressions) are left as they are: the module works on anything closed
+    under ``+ - *``.
+    """
     flat = a.reshape(-1)
     for i, x in enumerate(flat):
-        if not isinstance(x, type(mpq(0))):
+        if isinstance(x, (int, _MPZ)) and not isinstance(x, bool):
             flat[i] = mpq(x)
     return a
+
+
+_MPZ = type(mpz(0))
 
 
 def to_power(c: np.ndarray) -> np.ndarray:
