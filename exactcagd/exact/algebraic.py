@@ -106,6 +106,10 @@ class RealAlgebraic:
             c0, c1 = (int(c) for c in poly.coeffs())
             self.lo = self.hi = mpq(-c0, c1)
 
+    def __reduce__(self):
+        """Pickle support (flint polynomials do not pickle): integer coefficients + interval."""
+        return (_restore, ([int(c) for c in self.poly.coeffs()], self.lo, self.hi))
+
     @classmethod
     def from_rational(cls, value) -> "RealAlgebraic":
         q = to_rational(value)
@@ -237,6 +241,10 @@ class RealAlgebraic:
 
     def __repr__(self) -> str:
         return f"RealAlgebraic({self})"
+
+
+def _restore(coeffs: list, lo, hi) -> "RealAlgebraic":
+    return RealAlgebraic(flint.fmpz_poly(coeffs), lo, hi, _checked=True)
 
 
 def _dyadic_hull(lo: mpq, hi: mpq, k: int) -> tuple[mpq, mpq]:

@@ -134,7 +134,12 @@ class Runner:
             for item in plan:
                 if not item.cached:
                     name = item.product["name"]
-                    atomic_write_bytes(self._cache_path(item.key), pickle.dumps((results[name], _strip(infos[name]))))
+                    try:
+                        blob = pickle.dumps((results[name], _strip(infos[name])))
+                    except (TypeError, pickle.PicklingError) as exc:
+                        print(f"note: {name} is not cached ({exc})", file=sys.stderr)
+                        continue
+                    atomic_write_bytes(self._cache_path(item.key), blob)
 
 
 def _strip(info: dict) -> dict:

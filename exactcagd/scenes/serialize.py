@@ -9,6 +9,7 @@ defining polynomial and isolating interval, and correctly rounded float64 compan
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import os
 import tempfile
@@ -57,6 +58,8 @@ def to_json_value(obj):
         return obj
     if hasattr(obj, "to_dict"):
         return to_json_value(obj.to_dict())
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        return {f.name: to_json_value(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
     if type(obj).__module__.startswith("sympy"):
         return str(obj.as_expr() if hasattr(obj, "as_expr") else obj)
     raise TypeError(f"no exact JSON form for {type(obj).__name__}")
