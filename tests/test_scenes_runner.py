@@ -1,0 +1,79 @@
+"""End-to-end scene runs: plan shows skipped work, outputs are exact and complete, rerun hits the cache,
+a failing product leaves nothing half-written."""
+import copy
+import json
+
+import pytest
+import sympy as sp
+
+from exactcagd.cli import main
+from exactcagd.errors import ExactCAGDError
+from exactcagd.scenes.runner import Runner
+from exactcagd.scenes.spec import parse_scene
+
+SCENE = {
+    "scene": {"name": "small", "float_policy": "reject"},
+    "surfaces": {
+        "s": {
+            "type": "bspline",
+            "knots_u": [0, 0, 0, "1/2", 1, 1, 1],
+            "knots_v": [0, 0, 0, "1/2", 1, 1, 1],
+            "control_net": {"generator": "grid", "size": [4, 4], "z": "x*y"},
+        }
+    },
+    "curves": {"k": {"type": "bezier", "control_points": [["1/8", "1/8"], ["1/4", "3/8"], ["3/8", "1/8"]]}},
+    "products": [
+        {"kind": "patches", "name": "crossed", "surface": "s", "only_crossed_by": "k"},
+        {"kind": "image_curve", "name": "image", "surface": "s", "curve": "k"},
+        {"kind": "picture", "name": "pic", "of": ["s", "k", "image"]},
+    ],
+}
+
+
+def test_plan_reports_skipped_patches(tmp_path, capsys):
+    path = tmp_path / "small.json"
+    path.write_text(json.dumps(SCENE))
+    assert main(["plan", str(path), "--out", str(tmp_path / "out")]) == 0
+    out = capsys.readouterr().out
+    assert "1 patch(es) crossed by k" in out
+    assert "3 of 4 patches not crossed" in out
+    assert not (tmp_path / "out").exists(), "plan must not compute or write"
+
+
+def test_run_writes_exact_outputs_and_reruns_from_cache(tmp_path, capsys):
+    path = tmp_path / "small.json"
+    path.write_text(json.dumps(SCENE))
+    out_dir = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out_dir)]) == 0
+    files = {p.name for p in (out_dir / "small").iterdir()}
+    assert {"crossed.json", "image.json", "pic.png", "summary.json"} <= files
+    assert (out_dir / "small" / "pic.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+    # the exact image curve is F(K(t)): evaluate the stored exact control points (sympy Bernstein sum)
+    # at t = 1/3 and compare with the surface evaluated by de Boor at the domain point K(1/3)
+    data = json.loads((out_dir / "small" / "image.json").read_text())
+    piece = data["result"]["pieces"][0]["curve"]
+    pts = [[sp.Rational(c) for c in p] for p in piece["control_points"]]
+    t = sp.Rational(1, 3)
+    n = len(pts) - 1
+    value = [sum(sp.binomial(n, i) * t**i * (1 - t) ** (n - i) * pts[i][k] for i in range(n + 1)) for k in range(3)]
+    K = [(1 - t) ** 2 * sp.Rational(1, 8) + 2 * t * (1 - t) * sp.Rational(1, 4) + t**2 * sp.Rational(3, 8),
+         (1 - t) ** 2 * sp.Rational(1, 8) + 2 * t * (1 - t) * sp.Rational(3, 8) + t**2 * sp.Rational(1, 8)]
+    runner = Runner(parse_scene(copy.deepcopy(SCENE)), tmp_path / "x")
+    expected = runner.objects["s"].evaluate(str(K[0]), str(K[1]))
+    assert value == [sp.Rational(str(c)) for c in expected]
+    assert len(data["result"]["pieces"]) == 1 and n == 2 * (2 + 2)
+
+    capsys.readouterr()
+    assert main(["run", str(path), "--out", str(out_dir)]) == 0
+    assert capsys.readouterr().out.count("cached") >= 3
+
+
+def test_failing_product_writes_nothing(tmp_path):
+    bad = copy.deepcopy(SCENE)
+    # a trim curve leaving the surface domain makes the composition fail after the patches product ran
+    bad["curves"]["k"]["control_points"] = [["1/8", "1/8"], ["3", "3/8"], ["3/8", "1/8"]]
+    runner = Runner(parse_scene(bad), tmp_path / "out")
+    with pytest.raises(ExactCAGDError):
+        runner.run(progress=lambda line: None)
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.json"))
