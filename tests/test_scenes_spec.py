@@ -112,3 +112,30 @@ def test_shipped_scenes_validate():
     for path in scenes:
         assert load_scene(path).products
     json.dumps([str(p) for p in scenes])
+
+
+def test_json_schema_agrees_with_the_validator():
+    """The published JSON Schema accepts every shipped scene and rejects the hostile ones the
+    validator rejects for shape reasons (unknown keys, bad names, bad kinds)."""
+    jsonschema = pytest.importorskip("jsonschema")
+    import tomllib
+    from pathlib import Path
+
+    import exactcagd.scenes as pkg
+
+    schema = json.loads((Path(pkg.__file__).parent / "scene.schema.json").read_text())
+    jsonschema.Draft202012Validator.check_schema(schema)
+    validator = jsonschema.Draft202012Validator(schema)
+    for path in (Path(__file__).resolve().parents[1] / "examples" / "scenes").glob("*.toml"):
+        assert not list(validator.iter_errors(tomllib.loads(path.read_text()))), path
+    assert not list(validator.iter_errors(BASE))
+    for path, value in [
+        (("scene", "colour"), "red"),
+        (("products",), [{"kind": "explode"}]),
+        (("products",), [{"kind": "patches", "surface": "s", "name": "../x"}]),
+        (("curves", "k", "control_points"), [["one", 0], [1, 1]]),
+    ]:
+        data = scene_with(path, value)
+        assert list(validator.iter_errors(data)), path
+        with pytest.raises(SceneError):
+            Runner(parse_scene(data), Path("/nonexistent"))
