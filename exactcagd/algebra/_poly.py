@@ -1,0 +1,214 @@
+"""Polynomial plumbing shared by the algebra modules (no mathematics of its own).
+
+* integer polynomial rings of python-flint (``fmpz_mpoly``) in named variables;
+* conversion between sympy expressions / ``Poly`` and flint polynomials;
+* the homogeneous power-basis components ``(X(t), Y(t), W(t))`` of a planar curve;
+* the sign/scale convention of implicit equations.
+
+Convention for implicit equations (used by every route of :func:`implicitize`):
+integer coefficients, content 1 (primitive), and the leading coefficient in
+graded reverse lexicographic order with ``x > y`` is positive.
+
+>>> from exactcagd import BezierCurve
+>>> X, Y, W = curve_power(BezierCurve([[0, 0], [1, 2], [2, 0]]))
+>>> X, Y, W
+(2*x, (-4)*x^2 + 4*x, 1)
+"""
+
+from __future__ import annotations
+
+import flint
+import numpy as np
+import sympy
+from gmpy2 import mpq
+
+from ..errors import DegreeError, DimensionError, InputError, WeightError
+from ..exact import bernstein as bz
+from ..exact.scalars import to_rational
+
+__all__ = [
+    "X_SYM",
+    "Y_SYM",
+    "T_SYM",
+    "zctx",
+    "XY",
+    "curve_power",
+    "curve_from_polynomials",
+    "primitive_fmpz_polys",
+    "common_factor",
+    "mpoly_to_sympy",
+    "sympy_to_mpoly",
+    "normalize_implicit",
+    "fmpq_poly_of",
+    "mpq_of",
+]
+
+X_SYM, Y_SYM = sympy.symbols("x y")
+T_SYM = sympy.Symbol("t")
+
+
+def zctx(names, order: str = "degrevlex") -> flint.fmpz_mpoly_ctx:
+    """The (cached) flint context of integer polynomials in ``names``."""
+    return flint.fmpz_mpoly_ctx.get(tuple(str(n) for n in names), order)
+
+
+XY = zctx(("x", "y"))
+
+
+def mpq_of(q) -> mpq:
+    """A flint ``fmpq``/``fmpz`` (or int) as gmpy2 ``mpq``."""
+    if isinstance(q, flint.fmpq):
+        return mpq(int(q.p), int(q.q))
+    return mpq(int(q))
+
+
+def fmpq_poly_of(coeffs) -> flint.fmpq_poly:
+    """A flint rational polynomial from exact coefficients (lowest degree first)."""
+    out = []
+    for c in coeffs:
+        q = to_rational(c)
+        out.append(flint.fmpq(int(q.numerator), int(q.denominator)))
+    return flint.fmpq_poly(out)
+
+
+def primitive_fmpz_polys(polys) -> list[flint.fmpz_poly]:
+    """Scale rational polynomials by ONE common factor to coprime integer polynomials.
+
+    The common factor is positive, so signs (and ratios) are kept.
+    """
+    polys = [p if isinstance(p, flint.fmpq_poly) else flint.fmpq_poly(p) for p in polys]
+    den = 1
+    for p in polys:
+        den = den * int(p.denom()) // _gcd(den, int(p.denom()))
+    ints = [flint.fmpz_poly([int(c * den) for c in p.coeffs()]) for p in polys]
+    g = 0
+    for p in ints:
+        for c in p.coeffs():
+            g = _gcd(g, int(c))
+    if g > 1:
+        ints = [flint.fmpz_poly([int(c) // g for c in p.coeffs()]) for p in ints]
+    return ints
+
+
+def _gcd(a: int, b: int) -> int:
+    import math
+
+    return math.gcd(a, b)
+
+
+def curve_power(curve) -> tuple[flint.fmpz_poly, flint.fmpz_poly, flint.fmpz_poly]:
+    """Homogeneous power-basis components ``(X(t), Y(t), W(t))`` of a planar curve.
+
+    ``x = X/W, y = Y/W``; integer coefficients, jointly primitive, positive common
+    scale (so the sign of ``W`` on [0, 1] is that of the weights).  No common factor
+    is removed here (see :func:`common_factor`).
+    """
+    from ..geometry.bezier_curve import BezierCurve
+
+    if not isinstance(curve, BezierCurve):
+        raise InputError(f"expected a BezierCurve, got {type(curve).__name__}")
+    if curve.dimension != 2:
+        raise DimensionError(f"implicit algebra needs a planar curve, got dimension {curve.dimension}")
+    power = bz.to_power(curve.homogeneous())
+    comps = [fmpq_poly_of(power[:, j]) for j in range(3)]
+    return tuple(primitive_fmpz_polys(comps))
+
+
+def common_factor(X, Y, W) -> tuple[flint.fmpz_poly, tuple]:
+    """``(g, (X/g, Y/g, W/g))``: the gcd of the three components (notes 18.3.4 base points)."""
+    g = X.gcd(Y).gcd(W)
+    if g.degree() <= 0:
+        return flint.fmpz_poly([1]), (X, Y, W)
+    if g.coeffs()[-1] < 0:
+        g = -g
+    return g, tuple(p // g for p in (X, Y, W))
+
+
+def curve_from_polynomials(x, y, w=1, t=None):
+    """A :class:`BezierCurve` from power-basis polynomials ``x(t)/w(t), y(t)/w(t)``.
+
+    The notes (chapter 17) give their examples in power form; this builds the exact
+    Bézier form of the same parametrization (degree = the largest degree).  A
+    homogeneous Bernstein coefficient of ``w`` equal to zero (a control point at
+    infinity) cannot be represented and raises :class:`WeightError`.
+
+    >>> c = curve_from_polynomials("t**2 + 1", "t**2 + 2*t - 2")
+    >>> c.control_points
+    ((mpq(1,1), mpq(-2,1)), (mpq(1,1), mpq(-1,1)), (mpq(2,1), mpq(1,1)))
+    """
+    from ..geometry.bezier_curve import BezierCurve
+
+    t = T_SYM if t is None else t
+    exprs = [sympy.sympify(e) for e in (x, y, w)]
+    free = set().union(*(e.free_symbols for e in exprs)) - {t}
+    if free:
+        raise InputError(f"curve polynomials may only depend on {t}, found {sorted(map(str, free))}")
+    polys = [sympy.Poly(e, t, domain="QQ") for e in exprs]
+    n = max(p.degree() for p in polys)
+    if n < 0 or polys[2].is_zero:
+        raise InputError("the weight polynomial w(t) must not be zero")
+    power = np.empty((n + 1, 3), dtype=object)
+    for j, p in enumerate(polys):
+        coeffs = p.all_coeffs()[::-1]
+        for k in range(n + 1):
+            c = coeffs[k] if k < len(coeffs) else 0
+            power[k, j] = mpq(int(sympy.Rational(c).p), int(sympy.Rational(c).q))
+    hom = bz.from_power(power, n)
+    if any(hom[i, 2] == 0 for i in range(n + 1)):
+        raise WeightError("w(t) has a zero Bernstein coefficient (control point at infinity); not representable")
+    if polys[2].degree() == 0:
+        return BezierCurve._trusted(hom[:, :2] / hom[0, 2], None)
+    return BezierCurve.from_homogeneous(hom)
+
+
+# ---------------------------------------------------------------------- flint <-> sympy
+def mpoly_to_sympy(p, gens) -> sympy.Poly:
+    """A flint (integer or rational) multivariate polynomial as a sympy ``Poly`` in ``gens``."""
+    data = {}
+    for mono, c in p.to_dict().items():
+        data[tuple(int(e) for e in mono)] = sympy.Rational(int(c.p), int(c.q)) if isinstance(c, flint.fmpq) else sympy.Integer(int(c))
+    domain = "ZZ" if all(v.is_Integer for v in data.values()) else "QQ"
+    if not data:
+        return sympy.Poly(0, *gens, domain=domain)
+    return sympy.Poly.from_dict(data, *gens, domain=domain)
+
+
+def sympy_to_mpoly(expr, gens, ctx=None):
+    """A sympy expression/Poly with rational coefficients -> ``(fmpz_mpoly, denominator)``.
+
+    ``expr == mpoly / denominator`` with a positive integer denominator.
+    """
+    ctx = zctx(tuple(str(g) for g in gens)) if ctx is None else ctx
+    poly = expr if isinstance(expr, sympy.Poly) and tuple(expr.gens) == tuple(gens) else sympy.Poly(sympy.sympify(expr), *gens)
+    if not poly.domain.is_Exact or not (poly.domain.is_ZZ or poly.domain.is_QQ):
+        poly = poly.set_domain("QQ")  # raises for non-rational coefficients
+    items = [(m, sympy.Rational(c)) for m, c in poly.terms()]
+    den = 1
+    for _, c in items:
+        den = den * int(c.q) // _gcd(den, int(c.q))
+    data = {m: int(c * den) for m, c in items}
+    return ctx.from_dict(data) if data else ctx.from_dict({}), den
+
+
+def normalize_implicit(p):
+    """Primitive integer polynomial with positive leading coefficient (grevlex, x > y).
+
+    Applied to every implicit equation so that all routes return the same polynomial.
+    """
+    if p == 0:
+        return p
+    content = p.content()
+    if content != 1:
+        p = p / content
+    if p.context() is not XY:
+        p = XY.from_dict({tuple(m): int(c) for m, c in p.to_dict().items()})
+    if p.leading_coefficient() < 0:
+        p = -p
+    return p
+
+
+def check_not_constant(X, Y, W) -> None:
+    """Raise :class:`DegreeError` when the curve is a single point."""
+    # constant iff X W' - X' W == 0 and Y W' - Y' W == 0
+    if (X * W.derivative() - X.derivative() * W) == 0 and (Y * W.derivative() - Y.derivative() * W) == 0:
+        raise DegreeError("the curve is constant (its image is a single point): no implicit equation")

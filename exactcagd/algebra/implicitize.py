@@ -1,0 +1,267 @@
+"""Implicitization of rational planar Bézier curves (notes 17.5, 17.6, 18.4.6).
+
+Three routes give the same implicit polynomial ``f(x, y)``:
+
+``"resultant"``
+    ``Res_t(W(t) x - X(t), W(t) y - Y(t))`` (17.5), computed by python-flint's
+    subresultant algorithm (the fastest exact resultant available here).
+``"bezier"``
+    the ``n x n`` Bezout determinant in Bernstein form with the
+    ``l_ij = C(n,i) C(n,j) w_i w_j |x y 1; x_i y_i 1; x_j y_j 1|`` (17.6).
+``"moving_lines"``
+    the resultant of a mu-basis (two moving lines of degrees ``mu, n - mu``), a
+    determinant of size ``n - mu`` (18.4.6).
+
+Normalization (all routes): integer coefficients, content 1, leading coefficient
+in graded reverse lexicographic order (``x > y``) positive.
+
+Degenerate input (documented behaviour):
+
+* constant curve -> :class:`~exactcagd.errors.DegreeError`;
+* common factor of ``X, Y, W`` (base points) -> :class:`BasePointWarning`, the
+  factor is divided out (the implicit equation of the point set);
+* improper parametrization (the resultant is ``F^r``, ``r > 1``) ->
+  :class:`ImproperParametrizationWarning`, ``F`` is returned; the index ``r`` is in
+  :func:`implicit_equation`'s result.
+
+>>> from exactcagd import BezierCurve
+>>> implicitize(BezierCurve([[0, 0], [1, 2], [2, 0]])).as_expr()
+x**2 - 2*x + y
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+
+import flint
+import sympy
+
+from ..errors import InputError
+from ._diagnostics import BasePointWarning, ImproperParametrizationWarning
+from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, mpoly_to_sympy, normalize_implicit
+from .resultants import bezout_matrix_bernstein, det_bareiss, resultant_coeffs
+
+__all__ = [
+    "implicitize",
+    "implicit_equation",
+    "ImplicitEquation",
+    "implicit_resultant",
+    "implicit_bezier",
+    "implicit_moving_lines",
+    "l_matrix",
+    "bezier_bezout_matrix",
+    "reduced_components",
+    "ROUTES",
+]
+
+ROUTES = ("resultant", "bezier", "moving_lines")
+
+
+@dataclass
+class ImplicitEquation:
+    """Implicit equation of a rational curve, with what was found on the way.
+
+    Attributes
+    ----------
+    poly : sympy.Poly in ``x, y`` (integer, primitive, grevlex-positive)
+    mpoly : the same as a python-flint ``fmpz_mpoly``
+    degree : total degree of ``poly``
+    index : ``r``: the resultant was ``c * poly^r`` (``r = 1``: proper parametrization)
+    base_factor : common factor of ``X, Y, W`` removed (``1`` if none), as ``fmpz_poly``
+    curve_degree : degree of the reduced parametrization
+    """
+
+    poly: sympy.Poly
+    mpoly: object
+    degree: int
+    index: int
+    base_factor: object
+    curve_degree: int
+
+    @property
+    def proper(self) -> bool:
+        return self.index == 1
+
+
+def reduced_components(curve, warn: bool = True):
+    """``(X, Y, W)`` with base points removed (warning), constant curves rejected."""
+    X, Y, W = curve_power(curve)
+    g, (X, Y, W) = common_factor(X, Y, W)
+    check_not_constant(X, Y, W)
+    if g.degree() > 0 and warn:
+        warnings.warn(
+            f"the parametrization has base points (common factor {g} of X, Y, W, notes 18.3.4); "
+            "it was divided out",
+            BasePointWarning,
+            stacklevel=3,
+        )
+    return X, Y, W, g
+
+
+def _xy_coeff_lists(X, Y, W) -> tuple[list, list]:
+    """Coefficients (in t) of ``W x - X`` and ``W y - Y`` as integer polynomials in x, y."""
+    x, y = XY.gens()
+    n = max(p.degree() for p in (X, Y, W))
+    get = lambda p, k: int(p.coeffs()[k]) if k <= p.degree() else 0  # noqa: E731
+    a = [get(W, k) * x - get(X, k) for k in range(n + 1)]
+    b = [get(W, k) * y - get(Y, k) for k in range(n + 1)]
+    while len(a) > 1 and a[-1] == 0:
+        a.pop()
+    while len(b) > 1 and b[-1] == 0:
+        b.pop()
+    return a, b
+
+
+def implicit_resultant(X, Y, W, via: str = "flint"):
+    """``Res_t(W x - X, W y - Y)`` (17.5) as an ``fmpz_mpoly`` (not normalized).
+
+    ``via``: ``"flint"`` (subresultants), ``"sylvester"`` or ``"bezout"`` (Bareiss
+    on the power-form matrices of 17.3).
+    """
+    a, b = _xy_coeff_lists(X, Y, W)
+    if via == "flint":
+        # flint needs both lists non-constant in t; a constant list means a line x = c
+        if len(a) == 1 or len(b) == 1:
+            return resultant_coeffs(a, b, "sylvester")
+        return resultant_coeffs(a, b, "flint")
+    return resultant_coeffs(a, b, via)
+
+
+def _bernstein_xy_lists(X, Y, W) -> tuple[list, list]:
+    """Bernstein coefficients of ``W x - X`` and ``W y - Y`` (degree n) over Z[x, y]."""
+    from .moving_lines import _bernstein_hom
+
+    P = _bernstein_hom(X, Y, W)
+    import math
+
+    den = 1
+    for p in P:
+        for v in p:
+            den = den * int(v.denominator) // math.gcd(den, int(v.denominator))
+    x, y = XY.gens()
+    a = [int(p[2] * den) * x - int(p[0] * den) for p in P]
+    b = [int(p[2] * den) * y - int(p[1] * den) for p in P]
+    return a, b
+
+
+def bezier_bezout_matrix(X, Y, W) -> list[list]:
+    """The ``n x n`` matrix of 17.6 (entries sums of ``l_ij``) over Z[x, y]."""
+    a, b = _bernstein_xy_lists(X, Y, W)
+    return bezout_matrix_bernstein(a, b)
+
+
+def implicit_bezier(X, Y, W):
+    """Determinant of the Bernstein Bezout matrix (17.6), ``fmpz_mpoly`` (not normalized)."""
+    M = bezier_bezout_matrix(X, Y, W)
+    if len(M) == 0:
+        raise InputError("degree-0 curve")
+    return det_bareiss(M)
+
+
+def implicit_moving_lines(X, Y, W, via: str = "flint"):
+    """Resultant of a mu-basis (18.85), ``fmpz_mpoly`` (not normalized).
+
+    ``via``: how the resultant of the two moving lines is evaluated -- ``"flint"``
+    (default, fastest measured) or ``"bezout"`` (the notes' ``(n - mu) x (n - mu)``
+    determinant).
+    """
+    from .moving_lines import _bernstein_hom, _is_basis, implicit_from_moving_lines, mu_basis_nullspace, zeroing_process
+
+    n = max(p.degree() for p in (X, Y, W))
+    pair = None
+    if n >= 2:
+        try:
+            res = zeroing_process(_bernstein_hom(X, Y, W))
+            if len(res.lines) == 2 and _is_basis(res.lines[0], res.lines[1], X, Y, W):
+                pair = res.lines
+        except Exception:  # noqa: BLE001 - special curve: fall back to the null space
+            pair = None
+    if pair is None:
+        pair = mu_basis_nullspace(X, Y, W)
+    p, q = pair
+    if p.degree == 0 or q.degree == 0:
+        # a fixed line follows the curve: the curve is (part of) that line
+        line = p if p.degree == 0 else q
+        return line.xy_coefficients()[0]
+    return implicit_from_moving_lines(p, q, via)
+
+
+def l_matrix(curve) -> dict:
+    """The ``l_ij(x, y)`` of 17.6 (``i > j``) as sympy expressions in ``x, y``.
+
+    ``l_ij = C(n,i) C(n,j) w_i w_j |x y 1; x_i y_i 1; x_j y_j 1|`` for the stored
+    Bézier form of the curve (no degree reduction).
+    """
+    from ..exact.bernstein import binomial
+    from ..exact.scalars import to_sympy
+
+    hom = curve.homogeneous()
+    n = curve.degree
+    out = {}
+    for i in range(n + 1):
+        for j in range(i):
+            Pi, Pj = hom[i], hom[j]
+            M = sympy.Matrix([[X_SYM, Y_SYM, 1], [to_sympy(Pi[0]), to_sympy(Pi[1]), to_sympy(Pi[2])], [to_sympy(Pj[0]), to_sympy(Pj[1]), to_sympy(Pj[2])]])
+            out[(i, j)] = sympy.expand(binomial(n, i) * binomial(n, j) * M.det())
+    return out
+
+
+def _finish(R, g, n: int) -> ImplicitEquation:
+    if R == 0:  # pragma: no cover - base points were removed
+        raise ArithmeticError("the resultant vanished identically")
+    if not isinstance(R, flint.fmpz_mpoly) or R.context() is not XY:
+        R = XY.from_dict({tuple(m): int(c) for m, c in R.to_dict().items()}) if isinstance(R, flint.fmpz_mpoly) else XY.from_dict({(0, 0): int(R)})
+    _, factors = R.factor_squarefree()
+    factors = [(f, int(e)) for f, e in factors if f.total_degree() > 0]
+    if len(factors) != 1:  # pragma: no cover - the image of a rational curve is irreducible
+        raise ArithmeticError(f"resultant is not a power of one polynomial: {factors}")
+    F, r = factors[0]
+    F = normalize_implicit(F)
+    if r > 1:
+        warnings.warn(
+            f"the parametrization is not proper: it traces its curve {r} times "
+            f"(the resultant is F^{r}); returning F",
+            ImproperParametrizationWarning,
+            stacklevel=3,
+        )
+    return ImplicitEquation(mpoly_to_sympy(F, (X_SYM, Y_SYM)), F, int(F.total_degree()), r, g, n)
+
+
+def implicit_equation(curve, method: str = "resultant") -> ImplicitEquation:
+    """Implicit equation with diagnostics (index of the parametrization, base factor)."""
+    if method not in ROUTES:
+        raise InputError(f"unknown implicitization method {method!r}; choose one of {ROUTES}")
+    X, Y, W, g = reduced_components(curve)
+    n = max(p.degree() for p in (X, Y, W))
+    if method == "resultant":
+        R = implicit_resultant(X, Y, W)
+    elif method == "bezier":
+        R = implicit_bezier(X, Y, W)
+    else:
+        R = implicit_moving_lines(X, Y, W)
+    return _finish(R, g, n)
+
+
+def implicitize(curve, method: str = "resultant") -> sympy.Poly:
+    """Implicit equation ``f(x, y) = 0`` of a planar (rational) Bézier curve.
+
+    Parameters
+    ----------
+    curve : BezierCurve
+        planar, polynomial or rational.
+    method : ``"resultant"`` (17.5), ``"bezier"`` (17.6) or ``"moving_lines"`` (18.4.6).
+
+    Returns
+    -------
+    sympy.Poly in ``x, y`` over ZZ: primitive, positive leading coefficient in
+    grevlex (``x > y``).  Degree ``n`` for a proper curve of true degree ``n``.
+
+    Examples
+    --------
+    >>> from exactcagd import BezierCurve
+    >>> quarter = BezierCurve([[1, 0], [1, 1], [0, 1]], weights=[1, 1, 2])
+    >>> implicitize(quarter, method="moving_lines").as_expr()
+    x**2 + y**2 - 1
+    """
+    return implicit_equation(curve, method).poly
