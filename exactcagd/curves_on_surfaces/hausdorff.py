@@ -1,0 +1,269 @@
+"""Certified upper bounds of the Hausdorff distance between two planar rational curves.
+
+Box I of Yang et al. (004) (3-D tolerance -> 2-D tolerance) is missing from the
+source text, and their H(C_1, C_2) comes from an iterative method [25] without a
+guarantee.  exactcagd certifies instead (derivation and checks in
+``proofs/yang_hausdorff.py``):
+
+**Piece bound.**  Let ``A`` and ``B`` be rational Bézier pieces with positive weights,
+with end points ``a_0, a_1`` and ``b_0, b_1`` and projected control points ``Q^A_k``,
+``Q^B_k``.  For ``p`` on ``A`` let ``x`` be the point of the chord ``[b_0, b_1]`` nearest to
+``p``; the projection of ``B`` onto the chord's line is connected and contains both
+chord ends, so some ``y`` on ``B`` projects to ``x``, and ``|x - y|`` is at most the
+half-width ``delta_B = max_k dist(Q^B_k, line(b_0, b_1))`` of the fat line around
+the chord.  Since the distance to a segment is convex, its maximum over ``A``'s convex
+hull is attained at a control point:
+
+    h(A -> B) <= max_k dist(Q^A_k, [b_0, b_1]) + delta_B,
+
+and symmetrically for ``h(B -> A)``.  (A closed chord ``b_0 = b_1`` uses
+``max_k |Q^A_k - b_0|``.)
+
+**Curve bound.**  Cut ``C_1`` at ``0 = t_0 < ... < t_N = 1`` and ``C_2`` at
+``0 = tau_0 <= ... <= tau_N = 1``; the pieces cover both curves, so
+``H(C_1, C_2) <= max_i max(h(A_i -> B_i), h(B_i -> A_i))`` for *any* pairing.  The
+pairing only affects tightness: the ``tau_i`` are float foot points of
+``C_1(t_i)`` on ``C_2`` (rounded to dyadic rationals, kept monotonic), and pieces
+whose bound is too large are bisected adaptively.  Every distance comparison is
+exact (rationals or ``Q(sqrt(Delta))``); square roots are bounded above by exact
+integer square roots.
+
+>>> from gmpy2 import mpq
+>>> from exactcagd import BezierCurve
+>>> a = BezierCurve([[0, 0], [1, 1], [2, 0]]).homogeneous()
+>>> b = BezierCurve([[0, 0], [2, 0]]).homogeneous()
+>>> hb = hausdorff_bound(a, b, limit="3/5")       # true distance 1/2 (at the apex)
+>>> hb is not None and mpq(1, 2) <= hb <= mpq(3, 5)
+True
+"""
+
+from __future__ import annotations
+
+import gmpy2
+import numpy as np
+from gmpy2 import mpq, mpz
+
+from ..exact import bernstein as bz
+from ..exact.quadratic import QuadraticNumber
+from ..exact.scalars import to_rational
+
+__all__ = ["hausdorff_bound", "piece_bound", "sqrt_upper", "upper", "float_hausdorff"]
+
+
+def upper(x) -> mpq:
+    """A rational upper bound of an exact number (itself if rational)."""
+    if isinstance(x, QuadraticNumber):
+        return x.bounds(80)[1]
+    return mpq(x)
+
+
+def sqrt_upper(q, bits: int = 64) -> mpq:
+    """Rational ``r >= sqrt(q)`` with ``r - sqrt(q) <= 2^-bits (1 + sqrt(q))`` (exact isqrt)."""
+    q = upper(q)
+    if q <= 0:
+        return mpq(0)
+    scale = mpz(2) ** bits
+    num = q.numerator * scale * scale
+    r = gmpy2.isqrt(num // q.denominator)
+    while r * r * q.denominator < num:  # ceil
+        r += 1
+    return mpq(r, scale)
+
+
+def _casteljau_split(cols: list, t) -> tuple[list, list]:
+    """Left and right control values of scalar columns split at ``t`` (plain Python, exact)."""
+    left, right = [], []
+    s = 1 - t
+    for col in cols:
+        level = list(col)
+        lo, hi = [level[0]], [level[-1]]
+        while len(level) > 1:
+            level = [s * x + t * y for x, y in zip(level[:-1], level[1:])]
+            lo.append(level[0])
+            hi.append(level[-1])
+        left.append(lo)
+        right.append(hi[::-1])
+    return left, right
+
+
+def restrict_fast(hom: np.ndarray, a, b) -> np.ndarray:
+    """``bernstein.restrict`` for ``0 <= a < b <= 1`` by two de Casteljau splits (faster for
+    the small arrays used here)."""
+    cols = [list(hom[:, k]) for k in range(hom.shape[1])]
+    if b != 1:
+        cols, _ = _casteljau_split(cols, b)
+    if a != 0:
+        _, cols = _casteljau_split(cols, a / b)
+    out = np.empty(hom.shape, dtype=object)
+    for k, col in enumerate(cols):
+        out[:, k] = col
+    return out
+
+
+def _points(hom: np.ndarray) -> list:
+    return [tuple(row[k] / row[-1] for k in range(hom.shape[1] - 1)) for row in hom]
+
+
+def _sq(v) -> object:
+    return sum(x * x for x in v)
+
+
+def _dist_segment_sq(p, a, b):
+    e = [y - x for x, y in zip(a, b)]
+    ee = _sq(e)
+    ap = [y - x for x, y in zip(a, p)]
+    if ee == 0:
+        return _sq(ap)
+    s = sum(x * y for x, y in zip(ap, e))
+    if s <= 0:
+        return _sq(ap)
+    if s >= ee:
+        return _sq([y - x for x, y in zip(b, p)])
+    return _sq(ap) - s * s / ee
+
+
+def _dist_line_sq(p, a, b):
+    e = [y - x for x, y in zip(a, b)]
+    ee = _sq(e)
+    ap = [y - x for x, y in zip(a, p)]
+    if ee == 0:
+        return _sq(ap)
+    s = sum(x * y for x, y in zip(ap, e))
+    return _sq(ap) - s * s / ee
+
+
+def _max(values):
+    best = None
+    for v in values:
+        if best is None or v > best:
+            best = v
+    return best
+
+
+def _one_sided(pa: list, pb: list):
+    """``(max_k dist(Q^A_k, chord B)^2, delta_B^2)`` (exact)."""
+    b0, b1 = pb[0], pb[-1]
+    if all(x == y for x, y in zip(b0, b1)):
+        return _max(_sq([y - x for x, y in zip(b0, q)]) for q in pa), mpq(0)
+    a_part = _max(_dist_segment_sq(q, b0, b1) for q in pa)
+    delta = _max(_dist_line_sq(q, b0, b1) for q in pb[1:-1]) if len(pb) > 2 else mpq(0)
+    return a_part, delta
+
+
+def piece_bound(hom_a: np.ndarray, hom_b: np.ndarray) -> mpq:
+    """Rational upper bound of ``H(A, B)`` for two rational Bézier pieces (positive weights)."""
+    pa, pb = _points(hom_a), _points(hom_b)
+    best = mpq(0)
+    for x, y in ((pa, pb), (pb, pa)):
+        a_part, delta = _one_sided(x, y)
+        value = sqrt_upper(a_part) + sqrt_upper(delta)
+        if value > best:
+            best = value
+    return best
+
+
+# ---------------------------------------------------------------------- float helpers
+def _float_hom(hom) -> np.ndarray:
+    return np.vectorize(float, otypes=[float])(hom)
+
+
+def _eval(hf: np.ndarray, ts) -> np.ndarray:
+    ts = np.atleast_1d(np.asarray(ts, dtype=float))
+    n = hf.shape[0] - 1
+    s = 1.0 - ts
+    level = np.broadcast_to(hf, (len(ts),) + hf.shape).copy()
+    for _ in range(n):
+        level = s[:, None, None] * level[:, :-1] + ts[:, None, None] * level[:, 1:]
+    pts = level[:, 0, :]
+    return pts[:, :-1] / pts[:, -1:]
+
+
+def float_hausdorff(hom_a, hom_b, samples: int = 129) -> float:
+    """Float estimate of ``H`` from dense samples (a heuristic, never a certificate)."""
+    ts = np.linspace(0.0, 1.0, samples)
+    pa, pb = _eval(_float_hom(hom_a), ts), _eval(_float_hom(hom_b), ts)
+    d = np.sqrt(((pa[:, None, :] - pb[None, :, :]) ** 2).sum(-1))
+    return float(max(_seg_dist(pa, pb).max(), _seg_dist(pb, pa).max())) if samples > 1 else float(d.min())
+
+
+def _seg_dist(p: np.ndarray, poly: np.ndarray) -> np.ndarray:
+    """Distance of each point of ``p`` to the polyline ``poly``."""
+    a, b = poly[:-1], poly[1:]
+    e = b - a
+    ee = (e * e).sum(-1)
+    ee[ee == 0] = 1e-300
+    ap = p[:, None, :] - a[None, :, :]
+    s = np.clip((ap * e[None]).sum(-1) / ee[None], 0, 1)
+    foot = a[None] + s[..., None] * e[None]
+    return np.sqrt(((p[:, None, :] - foot) ** 2).sum(-1)).min(1)
+
+
+class _Footer:
+    """Float foot points on ``B`` from a dense sample with parabolic refinement (a heuristic)."""
+
+    def __init__(self, hf_b: np.ndarray, samples: int = 1025):
+        self.ts = np.linspace(0.0, 1.0, samples)
+        self.pts = _eval(hf_b, self.ts)
+        self.h = 1.0 / (samples - 1)
+
+    def __call__(self, point: np.ndarray, lo: float, hi: float) -> float:
+        i0 = int(np.floor(lo / self.h))
+        i1 = int(np.ceil(hi / self.h)) + 1
+        d = ((self.pts[i0:i1] - point) ** 2).sum(-1)
+        k = int(np.argmin(d))
+        t = self.ts[i0 + k]
+        if 0 < k < len(d) - 1:
+            a, b, c = d[k - 1], d[k], d[k + 1]
+            den = a - 2 * b + c
+            if den > 0:
+                t += 0.5 * self.h * (a - c) / den
+        return float(min(max(t, lo), hi))
+
+
+def _dyadic(x: float, lo: mpq, hi: mpq, bits: int = 40) -> mpq:
+    q = mpq(int(round(x * 2**bits)), 2**bits)
+    if not (lo < q < hi):
+        q = (lo + hi) / 2
+    return q
+
+
+def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512):
+    """Certified rational upper bound ``<= limit`` of ``H(A, B)``, or ``None``.
+
+    ``None`` means "not certified below ``limit``" (the caller subdivides); it is
+    returned at once when the float estimate already exceeds ``limit``.
+    """
+    limit = to_rational(limit, where="limit")
+    hf_a, hf_b = _float_hom(hom_a), _float_hom(hom_b)
+    if float_hausdorff(hom_a, hom_b, 33) > float(limit) * (1 + 1e-9):
+        return None
+    foot = _Footer(hf_b)
+
+    def hom_b_at(t):
+        return bz.de_casteljau(hom_b, t)
+
+    ts = [mpq(i, pieces) for i in range(pieces + 1)]
+    taus = [mpq(0)]
+    for t in ts[1:-1]:
+        point = _eval(hf_a, [float(t)])[0]
+        taus.append(_dyadic(foot(point, float(taus[-1]), 1.0), taus[-1], mpq(1)))
+    taus.append(mpq(1))
+    stack = list(zip(zip(ts[:-1], ts[1:]), zip(taus[:-1], taus[1:])))
+    count = len(stack)
+    best = mpq(0)
+    while stack:
+        (ta, tb), (sa, sb) = stack.pop()
+        piece_b = restrict_fast(hom_b, sa, sb) if sa < sb else np.array([hom_b_at(sa)] * 2, dtype=object)
+        bound = piece_bound(restrict_fast(hom_a, ta, tb), piece_b)
+        if bound <= limit:
+            best = max(best, bound)
+            continue
+        if count >= max_pieces:
+            return None
+        tm = (ta + tb) / 2
+        point = _eval(hf_a, [float(tm)])[0]
+        sm = _dyadic(foot(point, float(sa), float(sb)), sa, sb) if sa < sb else sa
+        stack.append(((ta, tm), (sa, sm)))
+        stack.append(((tm, tb), (sm, sb)))
+        count += 1
+    return best
