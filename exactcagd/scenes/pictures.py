@@ -2,7 +2,10 @@
 
 Surfaces are drawn as sampled wireframes, domain curves in the domain and (sampled
 through the surface) in 3-D, exact result curves sampled from their exact control
-data, approximations as separate coloured segments.
+data, approximations as separate coloured segments (their domain curves dashed in the
+domain), exact intersection points as markers.  When the picture shows an
+approximation, a third panel plots its distance to the exact image ``S(D(t))``
+(float samples, for the eye) under the certified bound (exact, from the product).
 """
 
 from __future__ import annotations
@@ -17,14 +20,18 @@ from ..numeric.sampling import sample_curve, sample_curve_on_surface, sample_sur
 __all__ = ["draw", "close"]
 
 
-def _figure():
+def _figure(error_panel: bool = False):
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig = plt.figure(figsize=(12, 5.5))
-    return fig, fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2, projection="3d")
+    columns = 3 if error_panel else 2
+    fig = plt.figure(figsize=(6 * columns, 5.5))
+    axes = [fig.add_subplot(1, columns, 1), fig.add_subplot(1, columns, 2, projection="3d")]
+    if error_panel:
+        axes.append(fig.add_subplot(1, columns, 3))
+    return fig, axes
 
 
 def close(fig) -> None:
@@ -62,10 +69,17 @@ def _draw_surface(ax2, ax3, name, surface, lines: int = 24) -> None:
     ax3.plot([], [], color="0.75", label=f"surface {name}")
 
 
+def _sample_any(curve, ts) -> np.ndarray:
+    """Float points of an exact Bézier curve, or of a curve over ``Q(sqrt D)``."""
+    if isinstance(curve, (BezierCurve, BSplineCurve)):
+        return sample_curve(curve, ts)
+    return np.asarray(curve.evaluate_float(ts), dtype=float)
+
+
 def _draw_exact_curves(ax3, label, curves, color=None) -> None:
     first = True
     for i, (curve, (s0, s1)) in enumerate(curves):
-        pts = sample_curve(curve, np.linspace(s0, s1, 200))
+        pts = _sample_any(curve, np.linspace(s0, s1, 200))
         c = color or f"C{i % 10}"
         ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2] if pts.shape[1] > 2 else 0 * pts[:, 0], color=c, lw=2, label=label if first else None)
         first = False
@@ -82,14 +96,56 @@ def _curves_of(result) -> list:
         if hasattr(item, "local_interval"):
             s0, s1 = item.local_interval()
             out.append((curve, (float(s0), float(s1))))
-        elif isinstance(curve, BezierCurve):
+        elif isinstance(curve, BezierCurve) or hasattr(curve, "evaluate_float"):
             out.append((curve, (0.0, 1.0)))
     return out
 
 
-def draw(product: dict, objects: dict, results: dict):
-    """Build the matplotlib figure of a ``picture`` product."""
-    fig, ax2, ax3 = _figure()
+def _is_approximation(result) -> bool:
+    return hasattr(result, "domain_segments") and hasattr(result, "distance_bound")
+
+
+def _draw_intersections(ax2, name, result) -> None:
+    points = [item.point for item in result if getattr(item, "point", None) is not None]
+    if points:
+        xy = np.array([[float(x), float(y)] for x, y in points])
+        ax2.plot(xy[:, 0], xy[:, 1], "kx", ms=9, mew=2, label=f"{name} ({len(points)}, exact)")
+
+
+def _draw_domain_segments(ax2, name, result) -> None:
+    first = True
+    for curve in result.domain_segments:
+        pts = _sample_any(curve, np.linspace(0.0, 1.0, 60))
+        ax2.plot(pts[:, 0], pts[:, 1], "--", lw=1, color="C3", label=f"{name} domain" if first else None)
+        first = False
+
+
+def _draw_error(axe, name, result, surface, curve, samples: int) -> None:
+    """Distance of each approximant sample to a dense float sampling of ``S(D(t))``."""
+    exact = sample_curve_on_surface(surface, curve, 20 * samples)
+    distances, position = [], []
+    segments = result.segments
+    for k, segment in enumerate(segments):
+        pts = _sample_any(segment, np.linspace(0.0, 1.0, max(8, samples // max(1, len(segments)))))
+        gaps = np.linalg.norm(pts[:, None, :] - exact[None, :, :], axis=2).min(axis=1)
+        distances.extend(gaps)
+        position.extend(k + np.linspace(0.0, 1.0, len(gaps)))
+    line = axe.semilogy(np.array(position), np.maximum(distances, 1e-17), lw=1, label=f"{name}: sampled distance")
+    axe.axhline(float(result.distance_bound), color=line[0].get_color(), ls=":", label=f"{name}: certified bound")
+    axe.set_xlabel("segment index + local parameter")
+    axe.set_ylabel("distance to the exact image")
+
+
+def draw(product: dict, objects: dict, results: dict, specs: dict | None = None):
+    """Build the matplotlib figure of a ``picture`` product.
+
+    ``specs`` maps product names to their scene entries (to find the surface and
+    curve of an approximation for the error panel).
+    """
+    specs = specs or {}
+    approximations = [n for n in product["of"] if _is_approximation(results.get(n)) and n in specs]
+    fig, axes = _figure(error_panel=bool(approximations))
+    ax2, ax3 = axes[0], axes[1]
     ax2.set_title("parameter domain")
     ax3.set_title(product.get("title", product["name"]))
     names = product["of"]
@@ -110,9 +166,22 @@ def draw(product: dict, objects: dict, results: dict):
             else:
                 ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2], lw=1.5, label=name)
         elif name in results:
-            curves = _curves_of(results[name])
+            result = results[name]
+            if isinstance(result, list) and result and hasattr(result[0], "point"):
+                _draw_intersections(ax2, name, result)
+                continue
+            if _is_approximation(result):
+                _draw_domain_segments(ax2, name, result)
+            curves = _curves_of(result)
             if curves:
-                _draw_exact_curves(ax3, f"{name} (exact data)", curves)
+                label = f"{name} ({len(curves)} segments)" if _is_approximation(result) else f"{name} (exact data)"
+                _draw_exact_curves(ax3, label, curves)
+    for name in approximations:
+        spec = specs[name]
+        _draw_error(axes[2], name, results[name], objects[spec["surface"]], objects[spec["curve"]], samples)
+    if approximations:
+        axes[2].set_title("approximation error")
+        axes[2].legend(loc="best", fontsize=7)
     ax2.set_aspect("equal", adjustable="box")
     ax2.legend(loc="best", fontsize=8)
     ax3.legend(loc="upper left", fontsize=7)

@@ -15,6 +15,7 @@ from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve, BSplineSurface
 from .serialize import dumps
+from .spec import DEFAULT_APPROXIMATION
 
 __all__ = ["references", "plan", "compute", "render"]
 
@@ -89,7 +90,7 @@ def _plan_on_surface(surface, curve, product) -> tuple[list[str], list[str]]:
         degree = _degree_estimate(surface, curve)
         needs.append(f"exact composition, stored degree {degree} per piece (isoparametric pieces use the shortcut)")
     else:
-        needs.append(f"{product.get('method', 'cubic')} approximation to tol {product['tol']}")
+        needs.append(f"{product.get('method', DEFAULT_APPROXIMATION)} approximation to tol {product['tol']}")
         skips.append("exact output of the composed curve (only its certified distance is used)")
     return needs, skips
 
@@ -166,7 +167,7 @@ def _compute_patches(surface, product, objects):
 
 
 def _compute_approximation(surface, curve, product):
-    method = product.get("method", "cubic")
+    method = product.get("method", DEFAULT_APPROXIMATION)
     tol = product["tol"]
     if method == "cubic":
         from ..composition.cubic_approx import approximate_cubic
@@ -192,7 +193,8 @@ def _picture(product: dict, runner, results: dict) -> bytes:
     from . import pictures
 
     buffer = io.BytesIO()
-    fig = pictures.draw(product, runner.objects, results)
+    specs = {p["name"]: p for p in runner.scene.products}
+    fig = pictures.draw(product, runner.objects, results, specs)
     fig.savefig(buffer, format="png", dpi=110)
     pictures.close(fig)
     return buffer.getvalue()

@@ -71,6 +71,10 @@ PRODUCT_KINDS = {
 }
 _COMMON_PRODUCT_KEYS = {"kind", "name"}
 
+# Yang et al.'s parabola method works on every piece of a NURBS trim curve; Lasser &
+# Bonneau's cubic (VIII) needs pieces with rational end parameters.
+DEFAULT_APPROXIMATION = "parabola"
+
 
 class SceneError(InputError):
     """A scene file is malformed; the message names the offending key."""
@@ -363,7 +367,7 @@ def _check_product(spec, where: str, scene: Scene) -> dict:
         tol = _check_number(spec["tol"], f"{where}.tol", "exact")
         if tol <= 0:
             raise SceneError(f"{where}.tol: tolerance must be positive")
-        method = spec.get("method", "cubic")
+        method = spec.get("method", DEFAULT_APPROXIMATION)
         if method not in ("cubic", "parabola", "hyperbola", "polyline"):
             raise SceneError(f"{where}.method: expected cubic, parabola, hyperbola or polyline")
     if kind == "picture":
