@@ -169,10 +169,39 @@ def test_bad_input():
         compose_spline(surface, BezierCurve([[0, 0], [Fr(3, 2), Fr(1, 2)]]))
     with pytest.raises(DimensionError):
         compose_spline(surface, BezierCurve([[0, 0, 0], [1, 1, 1]]))
-    with pytest.raises(NotSupportedError):
-        from exactcagd.composition import approximate_cubic
 
-        approximate_cubic(surface, _curve(), "1/100")
+
+@pytest.mark.parametrize("rational", [False, True])
+def test_cubic_approximation_across_irrational_crossings(rational):
+    """Section VIII on a spline: snapped joints share an exact point (and direction where the
+    exact curve is C1); the certified bound holds against exact de Boor points."""
+    import numpy as np
+
+    from exactcagd.composition import approximate_cubic
+
+    surface, curve = _surface(rational), _curve(rational)
+    tol = Fr(1, 100)
+    result = approximate_cubic(surface, curve, "1/100")
+    assert result.tolerance_met and result.distance_bound <= tol
+    cubics = [s.curve for s in result.segments]
+    assert tuple(cubics[0].evaluate(0)) == surface.evaluate(*curve.evaluate(0))
+    assert tuple(cubics[-1].evaluate(1)) == surface.evaluate(*curve.evaluate(1))
+    exact = compose_spline(surface, curve)
+    corners = [j.parameter for j in exact.joints if j.remark_bound == 0]
+    for left, right in zip(result.segments[:-1], result.segments[1:]):
+        a, b = left.curve.points_array(), right.curve.points_array()
+        assert all(x == y for x, y in zip(a[3], b[0]))  # G0 exactly
+        u, v = a[3] - a[2], b[1] - b[0]
+        cross = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        at_corner = any(left.interval[1] - Fr(1, 2**40) < c < left.interval[1] + Fr(1, 2**40) for c in corners)
+        if not at_corner:
+            assert all(c == 0 for c in cross) and sum(x * y for x, y in zip(u, v)) > 0  # G1 exactly
+    # Hausdorff check: exact points of S(K(t)) against dense float samples of the cubics
+    dense = np.vstack([np.array([[float(x) for x in c.evaluate(Fr(k, 400))] for k in range(401)]) for c in cubics])
+    for k in range(0, 101):
+        t = Fr(k, 100)
+        p = np.array([float(x) for x in surface.evaluate(*curve.evaluate(t))])
+        assert np.min(np.linalg.norm(dense - p, axis=1)) <= float(result.distance_bound)
 
 
 def test_to_dict_is_exact():

@@ -168,8 +168,12 @@ def _short_rational(x: float) -> mpq:
     return mpq(f.numerator, f.denominator)
 
 
-def fit_cubic(F: BezierCurve, samples: int | None = None, iterations: int = 8):
+def fit_cubic(F: BezierCurve, samples: int | None = None, iterations: int = 8, ends=(None, None)):
     """Fit one cubic to the exact curve ``F`` on [0, 1] by (20)-(22) with parameter correction.
+
+    ``ends`` optionally prescribes ``(point, direction)`` (exact arrays) at the start and/or
+    the end instead of ``F``'s own end point and end tangent (used at snapped joints of a
+    spline, where both neighbours must share one exact point and direction).
 
     Returns ``(cubic, lambdas, t_star, t_cubic, errors)``: the exact cubic, the exact
     ``(lambda_1, lambda_2)``, the corrected parameters on ``F``, the fixed parameters on ``X``
@@ -178,6 +182,10 @@ def fit_cubic(F: BezierCurve, samples: int | None = None, iterations: int = 8):
     pts = F.points_array()
     b0, b3 = pts[0], pts[-1]
     t0dir, t1dir = _end_direction(pts, False), _end_direction(pts, True)
+    if ends[0] is not None:
+        b0, t0dir = ends[0]
+    if ends[1] is not None:
+        b3, t1dir = ends[1]
     n = F.degree
     L = samples or max(24, 2 * n + 2)
     t = np.linspace(0.0, 1.0, L + 1)
@@ -238,8 +246,8 @@ def _split_parameter(tstar: np.ndarray, errors: np.ndarray) -> mpq:
     return mpq(Fraction(x).limit_denominator(1024).numerator, Fraction(x).limit_denominator(1024).denominator)
 
 
-def _approximate_piece(F: BezierCurve, interval, tol: mpq, max_segments: int, options, out: list) -> None:
-    cubic, lams, tstar, t, errors = fit_cubic(F, options.get("samples"), options.get("iterations", 8))
+def _approximate_piece(F: BezierCurve, interval, tol: mpq, max_segments: int, options, out: list, ends=(None, None)) -> None:
+    cubic, lams, tstar, t, errors = fit_cubic(F, options.get("samples"), options.get("iterations", 8), ends)
     phi = _reparametrization(tstar, t, options.get("reparam_degree", 3))
     bound = distance_bound(F, cubic, phi, target=tol)
     identity_bound = None
@@ -262,11 +270,11 @@ def _approximate_piece(F: BezierCurve, interval, tol: mpq, max_segments: int, op
     left, right = F.subdivide(s)
     a, b = interval
     mid = a + s * (b - a)
-    _approximate_piece(left, (a, mid), tol, max_segments, options, out)
-    _approximate_piece(right, (mid, b), tol, max_segments, options, out)
+    _approximate_piece(left, (a, mid), tol, max_segments, options, out, (ends[0], None))
+    _approximate_piece(right, (mid, b), tol, max_segments, options, out, (None, ends[1]))
 
 
-def approximate_cubic_curve(F: BezierCurve, tol, *, interval=(0, 1), max_segments: int = 64, samples: int | None = None, iterations: int = 8, reparam_degree: int = 3) -> CubicApproximation:
+def approximate_cubic_curve(F: BezierCurve, tol, *, interval=(0, 1), max_segments: int = 64, samples: int | None = None, iterations: int = 8, reparam_degree: int = 3, ends=(None, None)) -> CubicApproximation:
     """G1 cubic spline approximation of an exact Bézier curve ``F`` (section VIII).
 
     Parameters
@@ -282,6 +290,9 @@ def approximate_cubic_curve(F: BezierCurve, tol, *, interval=(0, 1), max_segment
     samples, iterations, reparam_degree
         ``L`` of (21) (default ``max(24, 2 rN + 2)``), parameter-correction rounds, degree of
         the reparametrization used for the certificate.
+    ends : (start, end)
+        Optional exact ``(point, direction)`` overriding ``F``'s end point and end tangent
+        (see :func:`fit_cubic`); the certified bound still measures against ``F`` itself.
     """
     if not isinstance(F, BezierCurve):
         raise InputError(f"expected a BezierCurve, got {type(F).__name__}")
@@ -291,19 +302,28 @@ def approximate_cubic_curve(F: BezierCurve, tol, *, interval=(0, 1), max_segment
     segments: list = []
     options = {"samples": samples, "iterations": iterations, "reparam_degree": reparam_degree, "splits_left": max_segments - 1}
     a, b = (to_rational(x) for x in interval)
-    _approximate_piece(F, (a, b), tol, max_segments, options, segments)
+    _approximate_piece(F, (a, b), tol, max_segments, options, segments, tuple(ends))
     bound = max(s.distance_bound for s in segments)
     return CubicApproximation(segments, tol, bound, bound <= tol, max(s.sampled_error for s in segments), [F])
 
 
-def approximate_cubic(surface, curve, tol, *, max_segments: int = 64, samples: int | None = None, iterations: int = 8, reparam_degree: int = 3, method: str = "fast") -> CubicApproximation:
+def approximate_cubic(surface, curve, tol, *, max_segments: int = 64, samples: int | None = None, iterations: int = 8, reparam_degree: int = 3, method: str = "fast", snap_bits: int = 64) -> CubicApproximation:
     """G1 cubic Bézier spline approximation of the trim curve ``F(K(t))`` (section VIII).
 
     ``surface``/``curve`` as for :func:`exactcagd.composition.compose` (Bézier) or
     :func:`exactcagd.composition.compose_spline` (B-spline/NURBS).  Each exact piece of
-    ``F(K(t))`` is approximated by :func:`approximate_cubic_curve`; spline pieces whose
-    parameter interval has an irrational end are not supported (the exact end point is
-    irrational, so no cubic with rational control points interpolates it).
+    ``F(K(t))`` is approximated by :func:`approximate_cubic_curve`.
+
+    A spline piece may end at an irrational parameter ``t*`` (a knot-line crossing); no
+    cubic with rational control points passes through that exact point.  Such a joint is
+    *snapped*: a dyadic ``tau`` with ``|tau - t*| <= 2^-snap_bits`` replaces ``t*`` for
+    both neighbours, which share the exact point ``S(K(tau))`` and tangent direction taken
+    from the patch that really contains ``tau`` (so G1 stays exact).  Each neighbour is
+    fitted to its own patch's exact composition over the snapped interval, and the
+    reported bound adds ``2^-snap_bits`` times a certified speed bound of the pieces'
+    carrier curves (the exact curve between ``tau`` and ``t*`` moves at most that far),
+    so the bound stays a certified Hausdorff bound.  Where the exact curve has a corner
+    (a C0 knot line, Remark 1 bound 0) the joint is G0 with each side's own tangent.
 
     Returns
     -------
@@ -317,16 +337,91 @@ def approximate_cubic(surface, curve, tol, *, max_segments: int = 64, samples: i
     options = {"max_segments": max_segments, "samples": samples, "iterations": iterations, "reparam_degree": reparam_degree}
     if isinstance(surface, BezierSurface) and isinstance(curve, BezierCurve):
         return approximate_cubic_curve(compose(surface, curve, method=method), tol, **options)
+    tol = to_rational(tol, where="tol")
+    if tol <= 0:
+        raise InputError("tol must be positive")
     spline = compose_spline(surface, curve, method=method, continuity=False)
-    inexact = [p for p in spline.pieces if not p.exact]
-    if inexact:
-        example = next(t for t in inexact[0].interval if not isinstance(t, mpq))
-        raise NotSupportedError(
-            f"{len(inexact)} piece(s) of F(K(t)) end at irrational parameters (e.g. {example}); "
-            "a cubic with rational control points cannot interpolate their exact end points"
-        )
-    parts = [approximate_cubic_curve(p.curve, tol, interval=p.interval, **options) for p in spline.pieces]
+    pieces, gap = _snapped_pieces(spline.pieces, spline.joints, snap_bits)
+    if gap >= tol:
+        raise InputError(f"snap_bits={snap_bits} is too coarse for tol={rational_str(tol)} (snapping costs {float(gap):.3g})")
+    parts = [approximate_cubic_curve(F, tol - gap, interval=interval, ends=ends, **options) for F, interval, ends in pieces]
     segments = [s for part in parts for s in part.segments]
-    bound = max(s.distance_bound for s in segments)
-    tol = to_rational(tol)
+    bound = max(s.distance_bound for s in segments) + gap
     return CubicApproximation(segments, tol, bound, bound <= tol, max(p.sampled_error for p in parts), [p.curve for p in spline.pieces])
+
+
+# ----------------------------------------------------------------------------- snapped joints
+def _snap(t, bits: int) -> mpq:
+    """A dyadic rational within ``2^-bits`` of the exact parameter ``t`` (``t`` itself if rational)."""
+    if isinstance(t, mpq):
+        return t
+    t.refine(mpq(1, 2**bits))
+    return (t.lo + t.hi) / 2
+
+
+def _speed_bound(curve: BezierCurve) -> mpq:
+    """Certified ``M >= sup_{s in [0,1]} |C'(s)|`` from Bernstein coefficients.
+
+    For ``C = P / w``: ``C' = (P' w - P w') / w^2``; the numerator's Bernstein coefficients
+    bound it componentwise, ``min`` of the weight coefficients bounds ``w`` from below, and
+    the 1-norm bounds the 2-norm.
+    """
+    from ..exact import bernstein as bz
+
+    hom = curve.homogeneous()
+    P, w = hom[:, :-1], hom[:, -1]
+    if not curve.is_rational:
+        numerator, wmin = bz.derivative(P), mpq(1)
+    else:
+        W = w.reshape(-1, 1)
+        numerator = bz.product(bz.derivative(P), W) - bz.product(P, bz.derivative(W))
+        wmin = min(w)
+        if wmin <= 0:
+            raise InputError("a piece of F(K(t)) has a non-positive weight coefficient; cannot bound its speed")
+    return sum(max(abs(c) for c in numerator[:, k]) for k in range(numerator.shape[1])) / (wmin * wmin)
+
+
+def _snapped_pieces(pieces, joints_info, bits: int):
+    """``([(F, (tau0, tau1), ends)], gap)`` for :func:`approximate_cubic` (see its docstring).
+
+    ``F`` is piece ``k``'s patch composition re-parametrized to the snapped global interval;
+    ``ends`` prescribes the shared exact point (and, where the exact curve is at least C1
+    by Remark 1, the shared direction) at snapped joints; ``gap`` bounds the Hausdorff
+    distance between the snapped pieces and the exact curve.
+    """
+    smooth = {id(j.parameter): j.remark_bound is None or j.remark_bound >= 1 for j in joints_info}
+    taus = [_snap(p.interval[0], bits) for p in pieces] + [_snap(pieces[-1].interval[1], bits)]
+    locals_, gap = [], mpq(0)
+    for k, piece in enumerate(pieces):
+        a, b = piece.carrier
+        s0, s1 = (taus[k] - a) / (b - a), (taus[k + 1] - a) / (b - a)
+        F = piece.curve.reparametrize(s0, s1) if (s0, s1) != (0, 1) else piece.curve
+        locals_.append(F)
+        if not piece.exact:
+            # the stretch between tau and t* lies in the carrier, where the exact curve is piece.curve
+            gap = max(gap, mpq(1, 2**bits) * _speed_bound(piece.curve) / (b - a))
+    joints = [None] * (len(pieces) + 1)
+    for k in range(1, len(pieces)):
+        t_exact = pieces[k].interval[0]
+        if isinstance(t_exact, mpq):
+            continue
+        # the point and direction come from the piece whose exact interval holds tau
+        owner, end = (k - 1, -1) if taus[k] < t_exact else (k, 0)
+        pts = locals_[owner].points_array()  # affine control points: the end tangent is along the polygon
+        direction = _end_direction(pts, end == -1)
+        if end == -1:
+            direction = -direction  # _end_direction(from_end=True) points backwards
+        shared = smooth.get(id(t_exact), True)
+        joints[k] = (pts[end], direction if shared else None)
+    out = []
+    for k, F in enumerate(locals_):
+        start = end = None
+        if joints[k] is not None:
+            point, direction = joints[k]
+            start = (point, direction if direction is not None else _end_direction(F.points_array(), False))
+        if joints[k + 1] is not None:
+            point, direction = joints[k + 1]
+            end = (point, -direction if direction is not None else _end_direction(F.points_array(), True))
+        out.append((F, (taus[k], taus[k + 1]), (start, end)))
+    return out, gap
+

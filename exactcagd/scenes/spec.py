@@ -71,8 +71,8 @@ PRODUCT_KINDS = {
 }
 _COMMON_PRODUCT_KEYS = {"kind", "name"}
 
-# Yang et al.'s parabola method works on every piece of a NURBS trim curve; Lasser &
-# Bonneau's cubic (VIII) needs pieces with rational end parameters.
+# Yang et al.'s parabola method: exact G1 in Q(sqrt D) and lies exactly on the surface
+# (Lasser & Bonneau's "cubic" of VIII is available too, but lies off the surface).
 DEFAULT_APPROXIMATION = "parabola"
 
 
