@@ -28,7 +28,8 @@ __all__ = ["to_json_value", "atomic_write_text", "atomic_write_bytes", "dumps"]
 def _floats(nested):
     if isinstance(nested, (list, tuple, np.ndarray)):
         return [_floats(x) for x in nested]
-    return to_float(nested)
+    # exact non-rational entries (Q(sqrt D) numbers) round through their own high-precision __float__
+    return to_float(nested) if isinstance(nested, (Rational, int)) else float(nested)
 
 
 def to_json_value(obj):
@@ -56,8 +57,20 @@ def to_json_value(obj):
         return [to_json_value(v) for v in obj]
     if isinstance(obj, (str, int, float, bool)) or obj is None:
         return obj
+    if hasattr(obj, "to_dict") and hasattr(obj, "radicand"):  # a curve over Q(sqrt D)
+        data = to_json_value(obj.to_dict())
+        points, weights = obj.to_float()
+        data["type"] = "field_bezier_curve"
+        data["control_points_float"] = np.asarray(points, dtype=float).tolist()
+        data["weights_float"] = np.asarray(weights, dtype=float).tolist()
+        return data
     if hasattr(obj, "to_dict"):
-        return to_json_value(obj.to_dict())
+        data = obj.to_dict()
+        for key in ("segments", "domain_segments"):  # keep the curve objects: they get float companions
+            items = getattr(obj, key, None)
+            if isinstance(data, dict) and key in data and isinstance(items, list):
+                data[key] = list(items)
+        return to_json_value(data)
     if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
         return {f.name: to_json_value(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
     if type(obj).__module__.startswith("sympy"):
