@@ -77,3 +77,33 @@ def test_failing_product_writes_nothing(tmp_path):
     with pytest.raises(ExactCAGDError):
         runner.run(progress=lambda line: None)
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.json"))
+
+
+def test_approximation_product_is_exact_with_float_companions(tmp_path):
+    """An approximation product: segments over Q(sqrt D) stored as exact strings (parsed by sympy
+    here, independently) with float64 companions; the picture gets an error panel."""
+    scene = copy.deepcopy(SCENE)
+    scene["curves"]["k"]["control_points"] = [["1/10", "1/5"], ["2/5", "9/10"], ["3/5", "1/10"], ["9/10", "4/5"]]
+    scene["products"] = [
+        {"kind": "approximation", "name": "approx", "surface": "s", "curve": "k", "tol": "1/100"},
+        {"kind": "picture", "name": "pic", "of": ["s", "k", "approx"]},
+    ]
+    path = tmp_path / "small.json"
+    path.write_text(json.dumps(scene))
+    assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 0
+    data = json.loads((tmp_path / "out" / "small" / "approx.json").read_text())["result"]
+    assert data["method"] == "parabola" and sp.Rational(data["distance_bound"]) <= sp.Rational(1, 100)
+    assert any("homogeneous" in segment for segment in data["segments"]), "no Q(sqrt D) segment exercised"
+    for segment in data["segments"]:
+        if "homogeneous" in segment:  # coefficients in Q(sqrt D): "a + b*sqrt(D)"
+            rows = [[sp.sympify(c) for c in row] for row in segment["homogeneous"]]
+            points = [[c / row[-1] for c in row[:-1]] for row in rows]
+        else:
+            points = [[sp.Rational(c) for c in p] for p in segment["control_points"]]
+        for exact, approx in zip(points, segment["control_points_float"]):
+            for e, x in zip(exact, approx):
+                assert abs(sp.N(e, 30) - x) <= 1e-15 * max(1, abs(x))
+    from PIL import Image
+
+    width, _ = Image.open(tmp_path / "out" / "small" / "pic.png").size
+    assert width > 1500  # three panels: domain, 3-D, error
