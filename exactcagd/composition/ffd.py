@@ -9,9 +9,9 @@ becomes a curve of degree ``l`` or ``m`` (Statement 1, notes 14.0.1); B-spline c
 deformed piece by piece (:func:`exactcagd.composition.compose_spline`).
 
 The region map (14.1) is affine, so it is applied exactly to the (homogeneous) control
-points.  The notes' rule "points outside the region are not moved" is not modelled: a
-curve that leaves the region raises :class:`~exactcagd.errors.DomainError` (split it at
-the region boundary first).
+points.  The notes' rule "points outside the region are not moved" is ``outside="keep"``
+(:mod:`exactcagd.composition.ffd_partial`: exact split at the region boundary); by default
+a curve that leaves the region raises :class:`~exactcagd.errors.DomainError`.
 
 >>> from exactcagd import BezierCurve
 >>> lattice = identity_lattice(2, 3)                       # (14.3): FFD = identity
@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 from gmpy2 import mpq
 
-from ..errors import DimensionError, DomainError, InputError
+from ..errors import DimensionError, DomainError, InputError, NotSupportedError
 from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
@@ -71,7 +71,7 @@ def to_local(curve, region=None):
     return BSplineCurve(pts, curve.knots, curve.weights)
 
 
-def ffd(lattice: BezierSurface, shape, region=None, *, shortcut: bool = True, reduce: bool = False, method: str = "fast"):
+def ffd(lattice: BezierSurface, shape, region=None, *, shortcut: bool = True, reduce: bool = False, method: str = "fast", outside: str = "raise"):
     """Deform planar curves exactly by the (rational) Bézier FFD ``lattice``.
 
     Parameters
@@ -85,17 +85,31 @@ def ffd(lattice: BezierSurface, shape, region=None, *, shortcut: bool = True, re
     shortcut, reduce, method
         As for :func:`exactcagd.composition.compose` (horizontal/vertical lines map to
         degree ``l`` / ``m`` with ``shortcut``).
+    outside : {"raise", "keep"}
+        A curve leaving the region: ``"raise"`` a ``DomainError`` (default), or ``"keep"``
+        the notes' rule (ch. 14) -- outside points are not moved; a Bézier curve then gives a
+        :class:`~exactcagd.composition.ffd_partial.PartialFFD` split exactly at the region
+        boundary (:func:`~exactcagd.composition.ffd_partial.ffd_keep_outside`).
 
     Returns
     -------
-    BezierCurve (for a Bézier curve), SplineComposition (for a B-spline), or a list of these.
+    BezierCurve (for a Bézier curve), SplineComposition (for a B-spline), PartialFFD
+    (``outside="keep"``), or a list of these.
     """
+    if outside not in ("raise", "keep"):
+        raise InputError(f"outside: expected 'raise' or 'keep', got {outside!r}")
     if not isinstance(lattice, BezierSurface):
         raise InputError(f"lattice: expected a BezierSurface, got {type(lattice).__name__}")
     if isinstance(shape, (list, tuple)):
-        return [ffd(lattice, s, region, shortcut=shortcut, reduce=reduce, method=method) for s in shape]
+        return [ffd(lattice, s, region, shortcut=shortcut, reduce=reduce, method=method, outside=outside) for s in shape]
     if not isinstance(shape, (BezierCurve, BSplineCurve)):
         raise InputError(f"shape: expected a BezierCurve or BSplineCurve, got {type(shape).__name__}")
+    if outside == "keep":
+        if not isinstance(shape, BezierCurve):
+            raise NotSupportedError("outside='keep' takes Bézier curves; split a B-spline with .to_bezier() first")
+        from .ffd_partial import ffd_keep_outside
+
+        return ffd_keep_outside(lattice, shape, region, shortcut=shortcut, reduce=reduce, method=method)
     local = to_local(shape, region)
     if isinstance(local, BezierCurve):
         return compose(lattice, local, method, shortcut=shortcut, reduce=reduce)
