@@ -93,3 +93,26 @@ def deformed_lines():
     return verified_range("lattices of degree (3,2) as in Figures 14.6-14.9 (polynomial and rational) and (2,4)",
                           "the control points H_j(.6), V_i(.3) (homogeneous de Casteljau along rows / columns) give exactly the "
                           "sympy image of the line under (14.2); exactcagd's ffd returns the same curve")
+
+
+@claim(doc="sederberg", section="14", ref="Figure 14.5", statement="points outside of the rectangle are not moved; freezing rows of control points controls the continuity between deformed and undeformed portions")
+def continuity_control():
+    checked = 0
+    line = BezierCurve([[mpq(-1, 2), mpq(1, 2)], [mpq(3, 2), mpq(1, 2)]])  # crosses the region boundary at t = 1/4, 3/4
+    for n in (3, 4, 5):
+        for frozen in (1, 2):
+            net = [[[mpq(i, n), mpq(j, n)] for j in range(n + 1)] for i in range(n + 1)]
+            for i in range(frozen, n - frozen + 1):
+                for j in range(frozen, n - frozen + 1):
+                    net[i][j] = [net[i][j][0] + mpq(1, 7 + i), net[i][j][1] - mpq(1, 5 + j)]
+            result = ffd(BezierSurface(net), line, outside="keep")
+            assert result.joints == [True, True]  # C0: the boundary row is frozen
+            deformed = result.pieces[1].curve.derivative()
+            for t in (mpq(1, 4), mpq(3, 4)):
+                same_tangent = tuple(deformed.evaluate(t)) == tuple(line.derivative().evaluate(t))
+                assert same_tangent == (frozen >= 2), (n, frozen, t)
+            for t in (mpq(1, 10), mpq(9, 10)):
+                assert result.evaluate(t) == line.evaluate(t)  # outside: not moved
+            checked += 1
+    return verified_range("lattices of degree n x n, n = 3, 4, 5, with 1 or 2 frozen outer rows/columns, interior points displaced",
+                          f"exact split at the boundary (ffd outside='keep'); 1 frozen row: C0 but not C1; 2 frozen rows: C1 ({checked} cases)")
