@@ -123,6 +123,11 @@ class _DeCasteljau:
     name = "decasteljau"
 
     @staticmethod
+    def work(coefficients: int, dim: int) -> int:
+        """Floats of working memory per parameter (the whole triangle's current level)."""
+        return coefficients * dim
+
+    @staticmethod
     def check(t: np.ndarray, where: str) -> None:
         bad = (t < 0) | (t > 1)
         if bad.any():
@@ -166,6 +171,11 @@ class _HornerBernstein:
     """Horner's rule in Bernstein form (notes 3.2), ratio ``|s| <= 1`` on both halves."""
 
     name = "horner"
+
+    @staticmethod
+    def work(coefficients: int, dim: int) -> int:
+        """Floats per parameter: one running value per coordinate plus ratio and scale."""
+        return dim + 4
 
     @staticmethod
     def check(t: np.ndarray, where: str) -> None:
@@ -251,6 +261,10 @@ class _PowerHorner:
     """Exact conversion to the power basis (notes 3.3), then Horner's rule (notes 3.1)."""
 
     name = "power"
+
+    @staticmethod
+    def work(coefficients: int, dim: int) -> int:
+        return dim + 1
 
     @staticmethod
     def check(t: np.ndarray, where: str) -> None:
@@ -462,7 +476,7 @@ def evaluate(curve, ts, method: str = "decasteljau", bound: bool = True):
     dim = c.shape[1]
     values = np.empty((t.size, dim))
     radii = np.empty((t.size, dim)) if bound else None
-    for sl in _chunks(t.size, c.size):
+    for sl in _chunks(t.size, m.work(c.shape[0], dim)):
         with np.errstate(all="ignore"):  # overflow shows up as an infinite radius
             v, r = _curve_chunk(m, c, c_abs, t[sl], bound)
         values[sl] = v.T
