@@ -225,3 +225,51 @@ def test_bad_input():
         cubic("not a surface", ("1/2",) * 3, ("1/2",) * 3)
     with pytest.raises(InputError):
         mobius(X, "one half", "1/2")
+
+
+@pytest.mark.parametrize("kind", ["mobius", "quadratic"])
+def test_mobius_and_quadratic_symbolic_identity(kind):
+    """X(u(s,t), v(s,t)) == reparameterized X(s,t) as rational functions (sympy), printed (2)-(4)."""
+    rng = random.Random(13)
+    X = _surface(2, 2, rng)
+    s, t = sympy.symbols("s t")
+    R = lambda q: sympy.Rational(int(q.numerator), int(q.denominator))  # noqa: E731
+    if kind == "mobius":
+        a, b = mpq(2, 7), mpq(3, 5)
+        Y = mobius(X, a, b)
+        alpha, beta = R(a), R(b)
+        assert Y.degree == (2, 2)
+    else:
+        (a1, a2), (b1, b2) = (mpq(2, 5), mpq(3, 4)), (mpq(1, 6), mpq(5, 9))
+        Y = quadratic(X, (a1, a2), (b1, b2))
+        alpha = R(a1) * t + R(a2) * (1 - t)  # (4)
+        beta = R(b1) * s + R(b2) * (1 - s)
+        assert Y.degree == (4, 4)  # m + n in both directions
+    P = lambda e: sympy.Poly(e, s, t, domain="QQ")  # noqa: E731
+    lhs = _sym_hom(X, P((alpha - 1) * s), P(2 * alpha * s - s - alpha), P((beta - 1) * t), P(2 * beta * t - t - beta))
+    rhs = [P(e) for e in _sym_bernstein_hom(Y, s, t)]
+    for k in range(3):
+        assert (lhs[k] * rhs[3] - rhs[k] * lhs[3]).is_zero
+    # and a wrong map is detected: swapping alpha and 1 - alpha changes the surface
+    bad = _sym_hom(X, P(-alpha * s), P(2 * (1 - alpha) * s - s - (1 - alpha)), P((beta - 1) * t), P(2 * beta * t - t - beta))
+    assert any(not (bad[k] * rhs[3] - rhs[k] * bad[3]).is_zero for k in range(3))
+
+
+@settings(max_examples=15, deadline=None)
+@given(degrees, seeds, st.booleans())
+def test_fast_curve_substitution_equals_generic(deg, seed, irrational):
+    """The flint route of substitute_curve (scaled Bernstein form, pairs over Q(sqrt D)) gives
+    exactly the coefficients of the generic Bernstein-product route."""
+    from exactcagd.exact.quadratic import sqrt_rational
+    from exactcagd.reparam import substitute_curve
+
+    rng = random.Random(seed)
+    hom = _surface(*deg, rng).homogeneous()
+    r = sqrt_rational(mpq(rng.randint(2, 40), rng.randint(1, 9))) if irrational else mpq(rng.randint(1, 9), 7)
+    u_map = ([mpq(1, 5), r / 4 + mpq(1, 3), mpq(4, 5)][: rng.randint(1, 3)], [mpq(1)] * rng.randint(1, 2))
+    v_map = ([(r + 1) / 10, mpq(3, 2)], [r + 1, mpq(2)])
+    fast = substitute_curve(hom, u_map, v_map, fast=True)
+    slow = substitute_curve(hom, u_map, v_map, fast=False)
+    du, dv = max(len(x) for x in u_map) - 1, 1
+    assert fast.shape == slow.shape == (deg[0] * du + deg[1] * dv + 1, 4)
+    assert all(x == y for x, y in zip(fast.reshape(-1), slow.reshape(-1)))

@@ -3,7 +3,9 @@
 ``approximate(surface, domain_curve, tol, method="parabola"|"hyperbola"|"polyline")``
 returns a :class:`CurveOnSurface`:
 
-* ``.segments``: exact rational Bézier curves lying *exactly* on the surface -- each is
+* ``.segments``: exact rational Bézier curves (``BezierCurve`` instances; those with
+  coefficients in ``Q(sqrt(Delta))`` are :class:`FieldBezierCurve`, a ``BezierCurve``
+  subclass) lying *exactly* on the surface -- each is
   ``X(u(t), v(t))`` for a patch ``X`` and an exact domain curve; a parabola segment is the
   iso-line ``s = 1/2`` of an exact cubic reparameterization (eq. (5)) of its patch,
   degree ``max(2m + n, m + 2n)``; hyperbola and polyline segments have degree ``m + n``;
@@ -11,7 +13,9 @@ returns a :class:`CurveOnSurface`:
 * ``.distance_bound``: a certified upper bound (exact rational) of the Hausdorff distance
   to the exact image ``S(D(t))``, always ``<= tol``;
 * ``.degree``, ``.continuity`` (``"G1"`` checked exactly for the parabola method),
-  ``.patches``, ``.kinds``, ``.timings``.
+  ``.patches``, ``.kinds``, ``.timings``, ``.ends`` (parameters of ``D`` at both ends of each
+  segment and whether the segment interpolates ``D``'s point and tangent direction exactly
+  there -- always, except at irrational cuts and rounded joints, see ``snap_bits``).
 
 How exactness is kept (details in the modules):
 

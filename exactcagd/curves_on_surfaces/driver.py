@@ -84,6 +84,12 @@ class CurveOnSurface:
         for the baselines, with ``" (G0 at corners)"`` if the domain curve has corners.
     max_joint_angle : float
         Largest angle (degrees) between the two image tangents at a joint (float).
+    ends : list of ``((t0, on0), (t1, on1))``
+        Per segment: the global parameters of the domain curve ``D`` where the target
+        piece starts and ends, and whether the segment interpolates ``D`` *exactly*
+        there (joint point ``== D(t)`` and joint direction a positive multiple of
+        ``D'(t)``).  ``False`` at joints carried by an isolating interval (irrational
+        cuts), at stationary points, and at joints rounded by ``snap_bits``.
     """
 
     segments: list
@@ -102,6 +108,7 @@ class CurveOnSurface:
     g1_verified: bool | None = None
     closed: bool = False
     params: list = field(default_factory=list)
+    ends: list = field(default_factory=list)
 
     def __len__(self) -> int:
         return len(self.segments)
@@ -433,6 +440,8 @@ def approximate(
             raise ExactCAGDError(f"more than max_segments = {max_segments} segments needed")
     t_angle = time.perf_counter()
 
+    ends = [(_end_info(dcurve, it.ja, "hi"), _end_info(dcurve, it.jb, "lo")) for it in done]
+
     # images, exact
     m, n = grid.degree
     images, domains, kinds, params = [], [], [], []
@@ -498,7 +507,22 @@ def approximate(
         g1_verified=g1,
         closed=dcurve.closed,
         params=params,
+        ends=ends,
     )
+
+
+def _end_info(dcurve: DomainCurve, joint: Joint, side: str) -> tuple:
+    """``(global parameter, exact interpolation of D's point and tangent direction)``."""
+    k, t = getattr(joint, side)
+    a, b = dcurve.spans[k]
+    direction = joint.dir_out if side == "hi" else joint.dir_in
+    exact = (
+        joint.exact
+        and direction is not None
+        and tuple(joint.point) == dcurve.point(k, t)
+        and positively_parallel(direction, dcurve.derivative_direction(k, t))
+    )
+    return a + (b - a) * t, exact
 
 
 def _g1_exact(grid: SurfaceGrid, left: _Item, right: _Item, seg_l, seg_r) -> bool:

@@ -4,9 +4,14 @@ The G1 parabolas of Yang et al. (004), section 5, have ``alpha_2`` and ``beta`` 
 ``Q(sqrt(Delta))`` (eq. (16)); so do the control points of their images on the
 surface.  :class:`FieldBezierCurve` carries such a curve exactly in homogeneous form
 ``(w P, w)`` (entries ``mpq`` or :class:`~exactcagd.exact.quadratic.QuadraticNumber`).
-It offers the part of :class:`~exactcagd.geometry.bezier_curve.BezierCurve`'s interface
-the curves-on-surfaces code and its users need; :func:`make_curve` returns a plain
-``BezierCurve`` whenever every coefficient is rational.
+It is a subclass of :class:`~exactcagd.geometry.bezier_curve.BezierCurve` (so
+``isinstance(seg, BezierCurve)`` holds for every segment returned by
+:func:`~exactcagd.curves_on_surfaces.approximate`): the generic operations (evaluate,
+subdivide, elevate, blossom, ...) run unchanged on field entries; what needs ``Q``
+only (``reduce``, ``true_degree``) raises :class:`~exactcagd.errors.NotSupportedError`.
+The homogeneous form is primary; the affine control points are computed on first use
+(one field division each).  :func:`make_curve` returns a plain ``BezierCurve``
+whenever every coefficient is rational.
 
 >>> from gmpy2 import mpq
 >>> from exactcagd.exact.quadratic import sqrt_rational
@@ -23,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 from gmpy2 import mpq
 
-from ..errors import DomainError, InputError
+from ..errors import DomainError, InputError, NotSupportedError
 from ..exact import bernstein as bz
 from ..exact.quadratic import QuadraticNumber, field_of
 from ..exact.scalars import to_rational
@@ -52,7 +57,7 @@ def make_curve(hom: np.ndarray):
     return FieldBezierCurve(hom)
 
 
-class FieldBezierCurve:
+class FieldBezierCurve(BezierCurve):
     """A rational Bézier curve with homogeneous coefficients in ``Q(sqrt(D))``.
 
     Parameters
@@ -61,7 +66,7 @@ class FieldBezierCurve:
         Rows ``(w_i P_i, w_i)``; entries ``int``/``mpq``/``QuadraticNumber`` of one field.
     """
 
-    __slots__ = ("_hom", "_D")
+    __slots__ = ("_hom", "_D", "_affine")
 
     def __init__(self, hom):
         a = np.array(hom, dtype=object)
@@ -72,6 +77,39 @@ class FieldBezierCurve:
             raise InputError("a homogeneous control point has weight zero")
         self._D = field_of(a.reshape(-1))
         self._hom = a
+        self._weights = a[:, -1].copy()
+        self._affine = None
+
+    # ------------------------------------------------------------------ BezierCurve plumbing
+    @property
+    def _points(self) -> np.ndarray:
+        """Affine control points ``H_i / w_i`` (field divisions, computed once)."""
+        if self._affine is None:
+            h = self._hom
+            self._affine = np.vectorize(_clean, otypes=[object])(h[:, :-1] / h[:, -1:])
+        return self._affine
+
+    @classmethod
+    def _trusted(cls, points, weights):
+        w = np.asarray(weights, dtype=object)
+        return cls(np.concatenate([np.asarray(points, dtype=object) * w[:, None], w[:, None]], axis=1))
+
+    @classmethod
+    def from_homogeneous(cls, hom, rational: bool = True):
+        return cls(hom)
+
+    def _wrap(self, array: np.ndarray):
+        return make_curve(array)
+
+    def derivative(self):
+        """The derivative curve (quotient rule, exact in the field)."""
+        return make_curve(BezierCurve.derivative(self).homogeneous())
+
+    def true_degree(self) -> int:
+        raise NotSupportedError("true_degree needs rational coefficients (gcd over Q); this curve lies over Q(sqrt(D))")
+
+    def reduce(self):
+        raise NotSupportedError("reduce needs rational coefficients (gcd over Q); this curve lies over Q(sqrt(D))")
 
     # ------------------------------------------------------------------ properties
     @property
@@ -101,7 +139,7 @@ class FieldBezierCurve:
 
     @property
     def control_points(self) -> tuple:
-        return tuple(tuple(x / row[-1] for x in row[:-1]) for row in self._hom)
+        return tuple(tuple(p) for p in self._points)
 
     # ------------------------------------------------------------------ evaluation
     def evaluate(self, t, extrapolate: bool = False) -> tuple:

@@ -40,6 +40,13 @@ def to_json_value(obj):
         data = obj.to_dict()
         data["float"] = float(obj)
         return data
+    if isinstance(obj, BezierCurve) and getattr(obj, "radicand", None) is not None:  # a curve over Q(sqrt D)
+        data = to_json_value(obj.to_dict())
+        points, weights = obj.to_float()
+        data["type"] = "field_bezier_curve"
+        data["control_points_float"] = np.asarray(points, dtype=float).tolist()
+        data["weights_float"] = np.asarray(weights, dtype=float).tolist()
+        return data
     if isinstance(obj, BezierCurve):
         data = obj.to_dict()
         data["type"] = "bezier_curve"
@@ -57,13 +64,6 @@ def to_json_value(obj):
         return [to_json_value(v) for v in obj]
     if isinstance(obj, (str, int, float, bool)) or obj is None:
         return obj
-    if hasattr(obj, "to_dict") and hasattr(obj, "radicand"):  # a curve over Q(sqrt D)
-        data = to_json_value(obj.to_dict())
-        points, weights = obj.to_float()
-        data["type"] = "field_bezier_curve"
-        data["control_points_float"] = np.asarray(points, dtype=float).tolist()
-        data["weights_float"] = np.asarray(weights, dtype=float).tolist()
-        return data
     if hasattr(obj, "to_dict"):
         data = obj.to_dict()
         for key in ("segments", "domain_segments"):  # keep the curve objects: they get float companions
