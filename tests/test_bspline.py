@@ -233,6 +233,8 @@ def test_surface_patches_as_polynomials_and_span_selection():
         assert same(list(patch.to_sympy(S, T)), ref)
     only = s.to_bezier_patches(v_spans={1})
     assert set(only) == {(0, 1)} and only[(0, 1)][1] == patches[(0, 1)][1]
+    chosen = s.to_bezier_patches(pairs={(0, 0), (0, 2)})
+    assert set(chosen) == {(0, 0), (0, 2)} and all(chosen[k] == patches[k] for k in chosen)
 
 
 U_, V_ = sp.symbols("u v")

@@ -117,15 +117,21 @@ def test_only_crossed_patches_are_extracted(monkeypatch):
     calls = []
     original = BSplineSurface.to_bezier_patches
 
-    def spy(self, u_spans=None, v_spans=None):
-        calls.append((u_spans, v_spans))
-        return original(self, u_spans, v_spans)
+    def spy(self, u_spans=None, v_spans=None, pairs=None):
+        built = original(self, u_spans, v_spans, pairs)
+        calls.append(set(built))
+        return built
 
     monkeypatch.setattr(BSplineSurface, "to_bezier_patches", spy)
     short = BezierCurve([[Fr(1, 20), Fr(1, 20)], [Fr(3, 10), Fr(1, 5)]])  # stays in patch (0, 0)
     result = compose_spline(surface, short)
-    assert calls == [({0}, {0})]
+    assert calls == [{(0, 0)}]
     assert result.patches == [(0, 0)] and result.joints == []
+    # a diagonal crossing 3 of the 3 x 2 patches: the rows x columns product would be 4 (or 6)
+    calls.clear()
+    diagonal = BezierCurve([[Fr(1, 10), Fr(1, 10)], [Fr(5, 10), Fr(2, 10)], [Fr(9, 10), Fr(9, 10)]])
+    result = compose_spline(surface, diagonal)
+    assert calls == [set(result.patches)] and len(calls[0]) < 3 * 2
 
 
 def test_joint_continuity_remark1():

@@ -451,8 +451,7 @@ def compose_spline(surface, curve, method: str = "fast", *, shortcut: bool = Tru
     if isinstance(surface, BezierSurface):
         patches = {(0, 0): (((mpq(0), mpq(1)), (mpq(0), mpq(1))), surface)}
     else:
-        extracted = surface.to_bezier_patches({i for i, _ in needed}, {j for _, j in needed})
-        patches = {key: extracted[key] for key in needed}
+        patches = surface.to_bezier_patches(pairs=needed)  # only the crossed patches
     options = {"method": method, "shortcut": shortcut, "reduce": reduce}
     pieces, joints = [], []
     for seg in segments:

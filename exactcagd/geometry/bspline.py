@@ -274,15 +274,20 @@ class BSplineSurface:
         array, knots = kn.insert_knot(moved, self._knots_v, self._q, v, times)
         return self._from_array(np.moveaxis(array, 0, 1), self._knots_u, knots)
 
-    def to_bezier_patches(self, u_spans=None, v_spans=None) -> dict:
+    def to_bezier_patches(self, u_spans=None, v_spans=None, pairs=None) -> dict:
         """Exact extraction into Bézier patches (notes 15.7; Yang et al. section 3).
 
         Returns ``{(i, j): ((u_span, v_span), BezierSurface)}`` for the non-empty knot
-        spans.  With ``u_spans``/``v_spans`` (sets of span indices) only those patches
-        are built, each from its own ``(p+1) x (q+1)`` control points by blossoming
-        (:func:`exactcagd.exact.knots.span_bezier`); without them the whole net is
-        extracted by knot insertion.
+        spans.  With ``u_spans``/``v_spans`` (sets of span indices) only the patches of
+        those rows x columns are built, and with ``pairs`` (a set of ``(i, j)``) only
+        those patches, each from its own ``(p+1) x (q+1)`` control points by blossoming
+        (:func:`exactcagd.exact.knots.span_bezier`); without any of them the whole net
+        is extracted by knot insertion.
         """
+        if pairs is not None:
+            pairs = {(int(i), int(j)) for i, j in pairs}
+            u_spans = {i for i, _ in pairs}
+            v_spans = {j for _, j in pairs}
         array = self._array()
         if u_spans is None and v_spans is None:
             u_pieces = list(enumerate(kn.extract_bezier(array, self._knots_u, self._p)))
@@ -296,7 +301,8 @@ class BSplineSurface:
             if v_spans is None:
                 v_pieces = list(enumerate(kn.extract_bezier(moved, self._knots_v, self._q)))
             else:
-                v_pieces = [(j, kn.span_bezier(moved, self._knots_v, self._q, j)) for j in sorted(set(v_spans))]
+                wanted_v = sorted(j for j in set(v_spans) if pairs is None or (i, j) in pairs)
+                v_pieces = [(j, kn.span_bezier(moved, self._knots_v, self._q, j)) for j in wanted_v]
             for j, (v_span, patch) in v_pieces:
                 patch = np.moveaxis(patch, 0, 1)
                 surface = (

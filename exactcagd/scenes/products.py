@@ -157,8 +157,7 @@ def _compute_patches(surface, product, objects):
         return {(0, 0): surface}, {"summary": "1 patch"}
     if "only_crossed_by" in product:
         crossed = _crossed(surface, objects[product["only_crossed_by"]])
-        patches = surface.to_bezier_patches(u_spans={i for i, _ in crossed}, v_spans={j for _, j in crossed})
-        patches = {k: v for k, v in patches.items() if k in crossed}
+        patches = surface.to_bezier_patches(pairs=crossed)
     else:
         patches = surface.to_bezier_patches()
     return {f"{i},{j}": {"u_span": list(span[0]), "v_span": list(span[1]), "patch": s} for (i, j), (span, s) in patches.items()}, {
