@@ -1,20 +1,26 @@
 """Run every benchmark: ``python -m benchmarks [--quick] [--only a,b]`` (or ``exactcagd bench``).
 
 Each ``benchmarks/bench_*.py`` and ``benchmarks/stress_*.py`` module exposes
-``main(quick=False)`` and writes its own table under ``benchmarks/results/``; this
-runner calls them in one process, one after the other, and writes
-``benchmarks/results/RUNS.md`` with what ran, how long it took and what failed.
+``main(quick=False)`` (or ``main()`` reading the mode with ``_common.parse_quick``, which
+then returns the runner's mode) and writes its own table under ``benchmarks/results/``
+(repeated runs: median and min-max; ratios to peers measured in the same run; see
+``_common.measure``).  This runner calls them in one process, one after the other, and
+writes ``benchmarks/results/RUNS.md`` with what ran, how long it took, the process's
+resident-memory high-water mark after it, and what failed.  Peers (``pip install
+exactcagd[peers]``) that are absent are skipped with a printed message.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
+import inspect
 import pkgutil
 import time
 import traceback
 
-from ._common import RESULTS, machine, markdown_table
+from . import _common
+from ._common import RESULTS, machine, markdown_table, peak_rss
 
 import benchmarks
 
@@ -22,6 +28,19 @@ import benchmarks
 def discover() -> list[str]:
     names = [m.name for m in pkgutil.iter_modules(benchmarks.__path__)]
     return sorted(n for n in names if n.startswith(("bench_", "stress_")))
+
+
+def call_main(module, quick: bool) -> None:
+    """Call ``module.main`` in the runner's mode, whichever of the two conventions it uses."""
+    main = module.main
+    _common.RUNNER_QUICK = quick
+    try:
+        if "quick" in inspect.signature(main).parameters:
+            main(quick=quick)
+        else:
+            main()
+    finally:
+        _common.RUNNER_QUICK = None
 
 
 def run(quick: bool, only=None) -> int:
@@ -32,21 +51,37 @@ def run(quick: bool, only=None) -> int:
             continue
         start = time.perf_counter()
         try:
-            importlib.import_module(f"benchmarks.{name}").main(quick=quick)
+            call_main(importlib.import_module(f"benchmarks.{name}"), quick)
             status = "ok"
         except Exception:  # noqa: BLE001 - report and go on with the others
             failures += 1
-            status = "FAILED: " + traceback.format_exc().strip().splitlines()[-1]
+            status = "FAILED: " + traceback.format_exc().strip().splitlines()[-1].replace("|", "/")
         seconds = time.perf_counter() - start
         print(f"{name:<32} {status} ({seconds:.1f} s)", flush=True)
-        rows.append([name, status, f"{seconds:.1f}"])
-    RESULTS.mkdir(parents=True, exist_ok=True)
-    (RESULTS / "RUNS.md").write_text(
-        f"# Benchmark runs ({'quick' if quick else 'full'})\n\nMachine: {machine()}\n\n"
-        + markdown_table(["module", "status", "seconds"], rows)
-        + "\n"
-    )
+        rows.append([name, "quick" if quick else "full", time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), status,
+                     f"{seconds:.1f}", peak_rss()])
+    write_runs(rows, quick)
     return 1 if failures else 0
+
+
+RUNS_HEADERS = ["module", "mode", "finished", "status", "seconds", "peak RSS of the runner so far"]
+
+
+def write_runs(rows: list, quick: bool) -> None:
+    """Update ``results/RUNS.md``: this run's rows replace earlier rows of the same modules."""
+    path = RESULTS / "RUNS.md"
+    keep = {}
+    if path.exists():
+        for line in path.read_text().splitlines():
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if len(cells) == len(RUNS_HEADERS) and cells[0].startswith(("bench_", "stress_")):
+                keep[cells[0]] = cells
+    keep.update({row[0]: row for row in rows})
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    path.write_text(
+        f"# Benchmark runs\n\nMachine: {machine()}\n\nLast run: {'quick' if quick else 'full'} mode, "
+        f"{len(rows)} module(s).\n\n" + markdown_table(RUNS_HEADERS, [keep[k] for k in sorted(keep)]) + "\n"
+    )
 
 
 def main(argv=None) -> int:

@@ -7,6 +7,7 @@ the same process run.  Results go to ``benchmarks/results/``.
 from __future__ import annotations
 
 import argparse
+import importlib
 import os
 import platform
 import statistics
@@ -16,6 +17,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 RESULTS = Path(__file__).resolve().parent / "results"
+
+#: Set by the runner (``python -m benchmarks``): modules whose ``main()`` reads the mode
+#: with :func:`parse_quick` get the runner's mode instead of parsing ``sys.argv``.
+RUNNER_QUICK: bool | None = None
 
 
 @dataclass
@@ -28,6 +33,50 @@ class Timing:
 
     def fmt(self) -> str:
         return f"{_fmt_seconds(self.median)} ({_fmt_seconds(self.low)}-{_fmt_seconds(self.high)})"
+
+    def fmt_memory(self) -> str:
+        return fmt_bytes(self.peak_bytes)
+
+
+def fmt_bytes(n: int | None) -> str:
+    if n is None:
+        return "-"
+    for unit, size in (("GB", 1 << 30), ("MB", 1 << 20), ("kB", 1 << 10)):
+        if n >= size:
+            return f"{n / size:.1f} {unit}"
+    return f"{n} B"
+
+
+def ratio(slow: Timing | float, fast: Timing | float) -> str:
+    """``slow / fast`` as ``"3.2x"``: medians of two Timings measured in the same run, or plain seconds."""
+    a = slow.median if isinstance(slow, Timing) else slow
+    b = fast.median if isinstance(fast, Timing) else fast
+    if not b:
+        return "-"
+    r = a / b
+    return f"{r:.3g}x" if r < 100 else f"{r:,.0f}x"
+
+
+def optional_peer(module: str, what: str):
+    """Import an optional peer package; ``None`` (with a printed SKIP message) when absent.
+
+    Peers come with the ``peers`` extra: ``pip install exactcagd[peers]``.
+    """
+    try:
+        return importlib.import_module(module)
+    except Exception as exc:  # ImportError, or a broken binary wheel
+        print(f"SKIP {what}: peer module {module!r} not importable ({type(exc).__name__}: {exc}); "
+              "install with `pip install exactcagd[peers]`")
+        return None
+
+
+def peak_rss() -> str:
+    """High-water mark of this process's resident memory (``resource.getrusage``)."""
+    try:
+        import resource
+    except ImportError:  # not on POSIX
+        return "-"
+    return fmt_bytes(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024)
 
 
 def _fmt_seconds(s: float) -> str:
@@ -82,6 +131,38 @@ def write_result(topic: str, title: str, body: str) -> Path:
 
 
 def parse_quick(description: str) -> bool:
+    if RUNNER_QUICK is not None:
+        return RUNNER_QUICK
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--quick", action="store_true", help="smaller sizes (minutes, not hours)")
     return parser.parse_args().quick
+
+
+def loglog_plot(filename: str, series: dict, xlabel: str, ylabel: str, title: str, *, lines: bool = True,
+                floor: float = 1e-18) -> Path:
+    """Log-log plot of ``{label: [(x, y), ...]}`` into ``results/<filename>`` (values <= 0 drawn at ``floor``)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    for label, points in series.items():
+        if not points:
+            continue
+        xs = [x for x, _ in points]
+        ys = [max(y, floor) for _, y in points]
+        ax.plot(xs, ys, marker="o", linestyle="-" if lines else "none", label=label, markersize=4)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    path = RESULTS / filename
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
