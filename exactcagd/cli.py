@@ -31,9 +31,11 @@ CAPABILITIES = [
     ("exactcagd.reparam", "Mobius / quadratic / cubic reparameterization of rational surfaces (Yang et al.)"),
     ("exactcagd.curves_on_surfaces", "G1 parabola / hyperbola / polyline curves on NURBS surfaces (Yang et al.)"),
     ("exactcagd.algebra", "resultants, implicitization, inversion, moving lines, Groebner bases"),
+    ("exactcagd.toolbox", "the rest of Sederberg's notes: basics, offsets, blending, splines, interpolation, fitting, surfaces, T-splines, curvature, integrals"),
     ("exactcagd.numeric.evaluation", "float evaluators with certified error bounds"),
+    ("exactcagd.numeric.roots", "Bernstein root finding with certified enclosures (exact isolation as reference)"),
     ("exactcagd.numeric.interval", "interval arithmetic and interval Bezier curves"),
-    ("exactcagd.numeric.intersect", "curve intersection: subdivision, interval, Bezier clipping, exact"),
+    ("exactcagd.numeric.intersection", "curve intersection: subdivision, interval, Bezier clipping, exact"),
     ("exactcagd.scenes", "scene files, lazy planner, runner, reference data"),
 ]
 

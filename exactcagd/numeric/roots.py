@@ -1,0 +1,705 @@
+"""Real roots of polynomials in Bernstein form on [0, 1], in float64 with certified enclosures.
+
+Sources: Sederberg's notes (003), chapter 9:
+
+* 9.1 *convex hull marching* (:func:`marching_roots`): march from the left, each step
+  to where the convex hull of the explicit Bézier curve ``(i/n, y_i)`` first meets the
+  t-axis, subdivide there (de Casteljau), stop when the steps stall, deflate the root
+  with (9.1) ``y^1_i = n/(i+1) y_{i+1}`` and go on;
+* 9.2 *combined subdivide & derivative* (:func:`isolating_roots`): isolate by sign
+  variations of the Bernstein coefficients (halving at .5, .25, .125), and when that
+  does not isolate, split at the roots of the derivative; refine isolated roots with
+  the modified regula falsi on Horner's rule in Bernstein form (O(n) per step);
+* 9.3 products of Bernstein polynomials: :func:`exactcagd.exact.bernstein.product`;
+* 9.4 *line ∩ rational Bézier curve* (:func:`line_roots`): ``f_i = w_i (a x_i + b y_i + c)``.
+
+Certification (:func:`certify_roots`): the float methods only *propose* roots.  The
+exact coefficients are enclosed in outward-rounded float intervals
+(:mod:`exactcagd.numeric.enclose`); around each proposal a small interval is proven to
+hold exactly one simple root (its restricted interval Bernstein coefficients have
+exactly one sign variation and no zero), and every gap between the enclosures is
+proven root-free (restricted coefficients of one strict sign), bisecting a gap when
+needed.  What cannot be decided (multiple roots, clusters closer than the float
+resolution, near-roots of complex pairs) stays as an *uncertified* enclosure.  So:
+
+* every real root of the exact polynomial in [0, 1] lies in some returned enclosure
+  (always, proven);
+* an enclosure with ``certified=True`` holds exactly one root, of the stated
+  multiplicity (simple, or an exact endpoint root);
+* ``exists=True`` means at least one root is proven inside (a sign change).
+
+Exact endpoint roots (``c_0 = 0`` or ``c_n = 0``) are found exactly and deflated with
+(9.1) before any float work.  The exact reference routes are
+:func:`exactcagd.exact.algebraic.real_roots_bernstein` and
+:func:`exactcagd.numeric.descartes.isolate_exact`.
+
+>>> [round(r.t, 12) for r in bernstein_roots([1, -3, 1])]   # 8t^2 - 8t + 1
+[0.146446609407, 0.853553390593]
+>>> all(r.certified for r in bernstein_roots([1, -3, 1], method="marching"))
+True
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from gmpy2 import mpq
+
+from ..errors import DimensionError, InputError
+from ..exact.bernstein import as_coefficients, derivative
+from ..exact.scalars import to_rational
+from . import enclose as iv
+
+__all__ = [
+    "Root",
+    "bernstein_roots",
+    "marching_roots",
+    "isolating_roots",
+    "certify_roots",
+    "deflate_left",
+    "deflate_right",
+    "line_roots",
+    "METHODS",
+]
+
+METHODS = ("marching", "isolate")
+U = iv.U
+
+
+@dataclass(frozen=True)
+class Root:
+    """A root of a Bernstein polynomial on [0, 1] with a certified enclosure.
+
+    Attributes
+    ----------
+    t : float
+        Float estimate of the root (from the float method; the enclosure midpoint
+        when the enclosure came from the certification alone).
+    interval : (float, float)
+        ``lo <= hi``; proven to contain the roots it stands for.
+    multiplicity : int
+        Exact when ``certified``; otherwise the number of float roots merged here
+        (an estimate, 0 when the float method saw nothing there).
+    certified : bool
+        Exactly one distinct root, of this multiplicity, lies in ``interval``.
+    exists : bool
+        At least one root lies in ``interval`` (proven).
+    """
+
+    t: float
+    interval: tuple[float, float]
+    multiplicity: int
+    certified: bool
+    exists: bool
+
+    @property
+    def width(self) -> float:
+        return self.interval[1] - self.interval[0]
+
+    def contains(self, x) -> bool:
+        """True when the exact number ``x`` (rational or RealAlgebraic) lies in the enclosure."""
+        lo, hi = self.interval
+        return bool(mpq(lo) <= x) and bool(x <= mpq(hi))
+
+
+# ---------------------------------------------------------------- deflation (9.1)
+def deflate_left(y):
+    """Divide out a root at t = 0 (notes 9.1, (9.1)): ``f = t f^1``, ``f^1_i = n/(i+1) y_{i+1}``.
+
+    Exact for exact arrays (``y_0`` must be 0, it is ignored); works on floats too.
+
+    >>> [str(x) for x in deflate_left(as_coefficients([0, 1, 1]))]   # 2t(1-t) + t^2 = t (2 - t)
+    ['2', '1']
+    """
+    n = len(y) - 1
+    if n == 0:
+        raise InputError("cannot deflate a constant")
+    scale = np.array([mpq(n, i + 1) if _is_exact(y) else n / (i + 1) for i in range(n)], dtype=object if _is_exact(y) else float)
+    return np.asarray(y)[1:] * scale
+
+
+def deflate_right(y):
+    """Divide out a root at t = 1: ``f = (1 - t) f^1``, ``f^1_i = n/(n-i) y_i`` (mirror of (9.1))."""
+    n = len(y) - 1
+    if n == 0:
+        raise InputError("cannot deflate a constant")
+    scale = np.array([mpq(n, n - i) if _is_exact(y) else n / (n - i) for i in range(n)], dtype=object if _is_exact(y) else float)
+    return np.asarray(y)[:-1] * scale
+
+
+def _is_exact(y) -> bool:
+    return isinstance(y, np.ndarray) and y.dtype == object
+
+
+# ---------------------------------------------------------------- float helpers
+def _split(y: np.ndarray, t: float):
+    """Float de Casteljau subdivision at t (notes 2.3): pieces on [0, t] and [t, 1]."""
+    n = len(y) - 1
+    left, right = np.empty(n + 1), np.empty(n + 1)
+    level = y
+    left[0], right[n] = y[0], y[n]
+    s = 1.0 - t
+    for r in range(1, n + 1):
+        level = s * level[:-1] + t * level[1:]
+        left[r], right[n - r] = level[0], level[-1]
+    return left, right
+
+
+def _horner(y: np.ndarray, t: float) -> tuple[float, float]:
+    """Value and running error bound at t of a float Bernstein polynomial (notes 3.2)."""
+    value, bound = iv.horner_bound(y.reshape(-1, 1), np.zeros((len(y), 1)), t)
+    return float(value[0]), float(bound[0])
+
+
+def _noise(y: np.ndarray) -> float:
+    return 4.0 * (len(y) + 1) * U * float(np.max(np.abs(y)))
+
+
+# ---------------------------------------------------------------- 9.1 convex hull marching
+def marching_roots(y, tol: float = 1e-12, max_steps: int = 200) -> list[tuple[float, int]]:
+    """Roots in [0, 1] of a float Bernstein polynomial by convex hull marching (notes 9.1).
+
+    Each step goes to the left-most point where the convex hull of the explicit
+    Bézier curve ``(i/n, y_i)`` can meet the t-axis: the smallest intercept of the
+    chords from ``(0, y_0)`` to all points ``(i/n, y_i)`` closer to the axis (the chord
+    rule of notes 7.7.8 — never right of the true hull crossing, so no root is
+    skipped; chords to the points across the axis only could overshoot).  The piece
+    right of the step is kept (de Casteljau).  Steps shorter than ``tol`` end the
+    march at a root, which is deflated with (9.1); a sign change of ``f(t_i)`` between
+    steps (rounding "sneaking past" a root) also ends it.
+
+    One addition to the printed algorithm: once the piece's coefficients show exactly
+    one sign change (the next root is isolated), the march also proceeds from the right
+    end of a copy of the piece (the two-sided hull clip of Bézier clipping, 7.7), which
+    turns the linear convergence of the one-sided march into the fast convergence of
+    clipping; the root is then split off the piece and deflated as printed.
+
+    Returns
+    -------
+    list of (t, multiplicity) with multiplicity 1 each (repeated roots repeat), sorted.
+    """
+    orig = np.asarray(y, dtype=float).copy()
+    y = orig.copy()
+    stall = 24
+    roots: list[float] = []
+    left = 0.0  # the current piece is f on [left, 1], deflated ``here`` times at ``left``
+    here = 0
+    steps = 0
+    err = U * float(np.max(np.abs(y)))  # running bound on the error of the piece's coefficients
+
+    def restart(root: float, mult: int = 1):
+        # the piece right of a root, split off the *original* polynomial (no error build-up)
+        # and deflated once per root found at this place (notes (9.1))
+        nonlocal y, left, here, steps, err
+        here = here + mult if (roots and root == left) else mult
+        roots.extend([root] * mult)
+        left = root
+        if root >= 1.0:
+            y = orig[:1]
+            return
+        _, piece = _split(orig, root)
+        err = (2 * len(orig) + 1) * U * float(np.max(np.abs(orig)))
+        for _ in range(min(here, len(piece) - 1)):
+            piece[0] = 0.0
+            piece = deflate_left(piece)
+            err *= len(piece)
+        y = piece
+        steps = 0
+
+    while len(y) > 1:
+        n = len(y) - 1
+        if np.all(y == 0):
+            break
+        noise = err + _noise(y)
+        if abs(y[0]) <= noise:
+            restart(left)
+            continue
+        s0 = 1.0 if y[0] > 0 else -1.0
+        opposite = np.nonzero(s0 * y[1:] <= 0)[0] + 1
+        if opposite.size == 0:
+            break  # the hull never reaches the axis: no more roots
+        width = 1.0 - left
+        if _variations(y, noise) == 1 and abs(y[-1]) > noise:
+            restart(left + _window_root(y, tol / width, max_steps) * width)
+            continue
+        down_chords = np.nonzero(s0 * y[1:] < s0 * y[0])[0] + 1
+        ts = (down_chords / n) * (y[0] / (y[0] - y[down_chords]))
+        step = float(np.min(ts))
+        steps += 1
+        if steps == stall and n >= 2:
+            # creeping towards a multiple root (or a near miss): march on the derivative
+            # to its left-most root c (the idea of notes 9.2); f is monotone on [left, c]
+            action = _stall(y, tol / width, max_steps, err)
+            if action is not None:
+                kind, c, mult = action
+                if kind == "root":
+                    restart(left + c * width, mult)
+                else:  # jump: no root before c
+                    _, y = _split(y, c)
+                    err += 2 * n * U * float(np.max(np.abs(y)))
+                    left, here, steps = left + c * width, 0, 0
+                continue
+        _, right = _split(y, step)
+        err += 2 * n * U * float(np.max(np.abs(y)))
+        if step * width <= tol or steps >= max_steps:
+            restart(left + step * width)
+            continue
+        if right[0] * s0 < 0:  # rounding sneaked past a root: take it at the old left end
+            restart(left)
+            continue
+        y = right
+        left = left + step * width
+        here = 0
+    return _count(roots)
+
+
+def _stall(y: np.ndarray, tol: float, max_steps: int, err: float):
+    """Left-most critical point c of the piece and what it means (see :func:`marching_roots`)."""
+    n = len(y) - 1
+    # the derivative's roots by subdivide & derivative (9.2), not by marching: a march that
+    # stalls on the derivative would recurse on the second derivative, and so on — with
+    # clustered roots (Wilkinson-like, degree >= 15) that cascade never finished
+    crit = isolating_roots(n * (y[1:] - y[:-1]), tol, _err=2 * n * (err + _noise(y)))
+    crit = [(t, m) for t, m in crit if 0.0 < t < 1.0]
+    if not crit:
+        return None
+    c, m = crit[0]
+    value, herr = _horner(y, c)
+    if abs(value) <= herr + err + _noise(y):
+        return "root", c, m + 1
+    if (value > 0) == (y[0] > 0):
+        return "jump", c, 0
+    left, _ = _split(y, c)
+    return "root", _window_root(left, tol / c, max_steps) * c, 1
+
+
+def _window_root(y: np.ndarray, tol: float, max_steps: int) -> float:
+    """The one root of a piece with one sign change: march from both ends (local parameter)."""
+    a_glob, b_glob = 0.0, 1.0
+    w = y.copy()
+    n = len(w) - 1
+    for _ in range(max_steps):
+        if b_glob - a_glob <= tol:
+            break
+        s0 = 1.0 if w[0] > 0 else -1.0
+        sn = 1.0 if w[-1] > 0 else -1.0
+        if w[0] == 0 or w[-1] == 0 or s0 == sn:
+            break
+        opp = np.nonzero(s0 * w[1:] < s0 * w[0])[0] + 1
+        opp_r = np.nonzero(sn * w[:-1] < sn * w[-1])[0]
+        a = float(np.min((opp / n) * (w[0] / (w[0] - w[opp]))))
+        b = 1.0 - float(np.min(((n - opp_r) / n) * (w[-1] / (w[-1] - w[opp_r]))))
+        if not (0.0 <= a <= b <= 1.0):
+            break
+        if b - a > 0.7:  # little progress: halve instead, keeping the sign change
+            a, b = (0.0, 0.5) if (_split(w, 0.5)[0][-1] > 0) != (w[0] > 0) else (0.5, 1.0)
+        width = b_glob - a_glob
+        if b < 1.0:
+            w, _ = _split(w, b)
+        if a > 0.0:
+            _, w = _split(w, a / b)
+        a_glob, b_glob = a_glob + a * width, a_glob + b * width
+    return 0.5 * (a_glob + b_glob)
+
+
+def _count(roots: list[float], merge: float = 0.0) -> list[tuple[float, int]]:
+    out: list[tuple[float, int]] = []
+    for r in sorted(roots):
+        if out and abs(r - out[-1][0]) <= merge:
+            t, m = out[-1]
+            out[-1] = ((t * m + r) / (m + 1), m + 1)
+        else:
+            out.append((r, 1))
+    return out
+
+
+# ---------------------------------------------------------------- 9.2 subdivide & derivative
+def _variations(y: np.ndarray, noise: float) -> int:
+    signs = np.sign(np.where(np.abs(y) <= noise, 0.0, y))
+    signs = signs[signs != 0]
+    return int(np.count_nonzero(signs[1:] != signs[:-1]))
+
+
+def _regula_falsi(y: np.ndarray, a: float, b: float, fa: float, fb: float, tol_local: float) -> float:
+    """Modified (Illinois) regula falsi on [a, b] of the local piece, Horner evaluation."""
+    side = 0
+    for _ in range(200):
+        x = (a * fb - b * fa) / (fb - fa)
+        if not (a < x < b):
+            x = 0.5 * (a + b)
+        fx, err = _horner(y, x)
+        if abs(fx) <= err or b - a <= tol_local:
+            return x
+        if (fx > 0) == (fa > 0):
+            a, fa = x, fx
+            if side == -1:
+                fb *= 0.5
+            side = -1
+        else:
+            b, fb = x, fx
+            if side == 1:
+                fa *= 0.5
+            side = 1
+    return 0.5 * (a + b)
+
+
+def isolating_roots(y, tol: float = 1e-12, _err: float | None = None) -> list[tuple[float, int]]:
+    """Roots in [0, 1] by the combined subdivide & derivative algorithm (notes 9.2).
+
+    Isolation: exactly one sign change of the Bernstein coefficients isolates a root
+    (variation diminishing).  A piece with more changes is halved (at .5, then .25,
+    .125 of the original, i.e. up to three halvings); if still not isolated, the roots
+    of its derivative (found by the same algorithm, one degree lower) split it into
+    monotone pieces, each holding at most one root.  A derivative root where the
+    value is below the running error bound is reported as a multiple root.
+    Isolated roots are refined by the modified regula falsi with Horner's rule.
+
+    Returns
+    -------
+    list of (t, multiplicity), sorted (multiplicity > 1 only for detected multiple roots).
+    """
+    y = np.asarray(y, dtype=float)
+    out: list[tuple[float, int]] = []
+    err = U * float(np.max(np.abs(y))) if _err is None else _err
+    _isolate(y, 0.0, 1.0, 0, tol, out, err)
+    out.sort()
+    return out
+
+
+def _isolate(y: np.ndarray, a: float, b: float, depth: int, tol: float, out: list, err: float) -> None:
+    """``err`` bounds the error of the piece's coefficients (grows with each float split)."""
+    n = len(y) - 1
+    if n == 0:
+        return
+    noise = err + _noise(y)
+    v = _variations(y, noise)
+    if v == 0:
+        return
+    width = b - a
+    if v == 1 and abs(y[0]) > noise and abs(y[-1]) > noise:
+        x = _regula_falsi(y, 0.0, 1.0, float(y[0]), float(y[-1]), tol / width)
+        out.append((a + x * width, 1))
+        return
+    if depth < 3:
+        for m in (0.5, 0.4375, 0.5625):  # avoid splitting exactly on a root
+            value, herr = _horner(y, m)
+            if abs(value) > herr + err:
+                break
+        left, right = _split(y, m)
+        err = err + 2 * n * U * float(np.max(np.abs(y)))
+        mid = a + m * width
+        _isolate(left, a, mid, depth + 1, tol, out, err)
+        _isolate(right, mid, b, depth + 1, tol, out, err)
+        return
+    _by_derivative(y, a, b, tol, out, err)
+
+
+def _by_derivative(y: np.ndarray, a: float, b: float, tol: float, out: list, err: float) -> None:
+    """Split at the derivative's roots: between them f is monotone (notes 9.2, Fig. 9.3.h)."""
+    n = len(y) - 1
+    width = b - a
+    crit = isolating_roots(n * (y[1:] - y[:-1]), tol / width, _err=2 * n * err)
+    points = [(0.0, 0)] + [(t, m) for t, m in crit if 0.0 < t < 1.0] + [(1.0, 0)]
+    values = []
+    for t, m in points:
+        value, herr = _horner(y, t)
+        values.append(0.0 if abs(value) <= herr + err else value)
+    for k, (t, m) in enumerate(points):
+        if values[k] == 0.0 and 0 < k < len(points) - 1:
+            out.append((a + t * width, m + 1))
+        elif values[k] == 0.0 and (a + t * width in (0.0, 1.0) or k == 0):
+            out.append((a + t * width, 1))
+    for k in range(len(points) - 1):
+        fa, fb = values[k], values[k + 1]
+        if fa * fb < 0:
+            x = _regula_falsi(y, points[k][0], points[k + 1][0], fa, fb, tol / width)
+            out.append((a + x * width, 1))
+
+
+# ---------------------------------------------------------------- certification
+def _prepare(coeffs) -> tuple[np.ndarray, list[Root], np.ndarray]:
+    """Exact coefficients: endpoint roots found exactly and deflated; scaled by 2^k."""
+    c = coeffs if (isinstance(coeffs, np.ndarray) and coeffs.dtype == object) else as_coefficients(coeffs)
+    if c.ndim != 1:
+        raise DimensionError("a Bernstein polynomial needs a 1-D coefficient sequence")
+    if all(x == 0 for x in c):
+        raise InputError("the zero polynomial has every number as a root")
+    ends: list[Root] = []
+    k0 = 0
+    while c[0] == 0:
+        c = deflate_left(c)
+        k0 += 1
+    k1 = 0
+    while c[-1] == 0:
+        c = deflate_right(c)
+        k1 += 1
+    if k0:
+        ends.append(Root(0.0, (0.0, 0.0), k0, True, True))
+    if k1:
+        ends.append(Root(1.0, (1.0, 1.0), k1, True, True))
+    k = iv.power2_scale(c)
+    c = c * (mpq(2) ** k)
+    return c, ends, np.array([float(x) for x in c])
+
+
+def _restricted(lo, hi, a: float, b: float):
+    return iv.restrict(lo, hi, a, b)
+
+
+def _sign_pattern(lo: np.ndarray, hi: np.ndarray) -> tuple[bool, int]:
+    """(no coefficient interval contains 0, number of sign variations)."""
+    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi))):
+        return False, -1
+    definite = bool(np.all((lo > 0) | (hi < 0)))
+    if not definite:
+        return False, -1
+    signs = np.where(lo > 0, 1, -1)
+    return True, int(np.count_nonzero(signs[1:] != signs[:-1]))
+
+
+def _prove_simple(lo, hi, dlo, dhi, r: float, limit: float):
+    """Smallest tried interval around r with exactly one simple root, ``"none"`` if one is
+    proven root-free, else None.
+
+    Exactly one simple root in [a, b]: the restricted coefficients have no zero and one
+    sign variation (Descartes), or the end values have opposite signs and the
+    derivative's restricted coefficients one strict sign (monotone).
+    """
+    rho = max(abs(r), 1.0) * 2.0**-50
+    while rho <= limit:
+        a, b = max(0.0, iv.down(r - rho)), min(1.0, iv.up(r + 1.5 * rho))
+        rlo, rhi = _restricted(lo, hi, a, b)
+        definite, v = _sign_pattern(rlo, rhi)
+        if definite and v == 1:
+            return a, b
+        ends_definite, ve = _sign_pattern(np.array([rlo[0], rlo[-1]]), np.array([rhi[0], rhi[-1]]))
+        if ends_definite and ve == 1 and dlo.size:
+            d_definite, dv = _sign_pattern(*_restricted(dlo, dhi, a, b))
+            if d_definite and dv == 0:
+                return a, b
+        rho *= 16.0
+    if _root_free(lo, hi, max(0.0, r - limit), min(1.0, r + limit)):
+        return "none"
+    return None
+
+
+def _cluster_radius(lo, hi, t: float, limit: float) -> float:
+    """Radius of an enclosure around an unresolved cluster at t: grow by 4 until the two
+    shells [t + rho, t + 2 rho] and [t - 2 rho, t - rho] are proven root-free (the region
+    where float data cannot decide is then inside)."""
+    rho = max(abs(t), 1.0) * 2.0**-40
+    while rho < limit:
+        right = t + rho >= 1.0 or _root_free(lo, hi, t + rho, min(1.0, t + 2 * rho))
+        left = t - rho <= 0.0 or _root_free(lo, hi, max(0.0, t - 2 * rho), t - rho)
+        if right and left:
+            return rho
+        rho *= 4.0
+    return rho
+
+
+def _root_free(lo, hi, a: float, b: float) -> bool:
+    definite, v = _sign_pattern(*_restricted(lo, hi, a, b))
+    return definite and v == 0
+
+
+def _exists(lo, hi, a: float, b: float) -> bool:
+    rlo, rhi = _restricted(lo, hi, a, b)
+    first = (rlo[0] > 0, rhi[0] < 0)
+    last = (rlo[-1] > 0, rhi[-1] < 0)
+    return bool((first[0] and last[1]) or (first[1] and last[0]))
+
+
+def certify_roots(coeffs, estimates, tol: float = 1e-12) -> list[Root]:
+    """Turn float root estimates into certified enclosures of the exact roots.
+
+    Parameters
+    ----------
+    coeffs : exact Bernstein coefficients (the polynomial whose roots are meant)
+    estimates : list of (t, multiplicity) from a float method (may be wrong or incomplete)
+    tol : smallest width down to which a gap is bisected before it is given up
+
+    Returns
+    -------
+    list of Root, sorted and disjoint; their union holds every root in [0, 1].
+    """
+    c, ends, _ = _prepare(coeffs)
+    lo, hi = iv.enclose(c)
+    dlo, dhi = iv.enclose(derivative(c)) if len(c) > 1 else (np.zeros(0), np.zeros(0))
+    boxes: list[list] = []  # [a, b, t_estimate, multiplicity, certified]
+    if len(c) > 1:
+        ests = sorted((float(t), int(m)) for t, m in estimates if 0.0 <= t <= 1.0)
+        for i, (t, m) in enumerate(ests):
+            gap_l = t - ests[i - 1][0] if i > 0 else 1.0
+            gap_r = ests[i + 1][0] - t if i + 1 < len(ests) else 1.0
+            limit = min(gap_l, gap_r, 1.0) / 4.0
+            proven = _prove_simple(lo, hi, dlo, dhi, t, limit) if m == 1 else None
+            if proven == "none":
+                continue  # proven root-free around a spurious float root
+            if proven is not None:
+                boxes.append([proven[0], proven[1], t, 1, True])
+            else:
+                rho = _cluster_radius(lo, hi, t, max(limit, 2.0**-30))
+                boxes.append([max(0.0, t - rho), min(1.0, t + rho), t, m, False])
+        boxes = _merge(boxes)
+        boxes = _fill_gaps(lo, hi, boxes, max(tol, 2.0**-46))
+    roots = []
+    for a, b, t, m, cert in boxes:
+        if cert:
+            roots.append(Root(float(t), (float(a), float(b)), 1, True, True))
+        else:
+            t_est = t if t is not None else 0.5 * (a + b)
+            roots.append(Root(float(t_est), (float(a), float(b)), m, False, _exists(lo, hi, a, b)))
+    # exact endpoint roots: shrink neighbouring enclosures away from 0 and 1 is not needed;
+    # they are disjoint because the deflated polynomial is non-zero at 0 and 1 — but an
+    # enclosure of the deflated polynomial may still touch 0 or 1, so keep both.
+    return sorted(ends + roots, key=lambda r: (r.interval[0], r.interval[1]))
+
+
+def _merge(boxes: list[list]) -> list[list]:
+    boxes.sort(key=lambda b: b[0])
+    out: list[list] = []
+    for box in boxes:
+        if out and box[0] <= out[-1][1]:
+            prev = out[-1]
+            m = prev[3] + box[3]
+            t = None if prev[2] is None or box[2] is None else (prev[2] * prev[3] + box[2] * box[3]) / max(m, 1)
+            out[-1] = [prev[0], max(prev[1], box[1]), t, m, False]
+        else:
+            out.append(list(box))
+    return out
+
+
+def _fill_gaps(lo, hi, boxes: list[list], min_width: float, budget: int = 1000) -> list[list]:
+    """Prove every gap root-free; what cannot be proven joins a neighbour or becomes a box.
+
+    A gap that cannot be proven is bisected, down to ``max(min_width, len * 2**-24)``
+    (so the region around a cluster, where nothing can be proven in float, costs a
+    bounded number of tests), and at most ``budget`` tests are spent in all.
+    """
+    edges = [0.0] + [x for b in boxes for x in (b[0], b[1])] + [1.0]
+    gaps = [(edges[2 * i], edges[2 * i + 1]) for i in range(len(boxes) + 1)]
+    unproven: list[tuple[float, float]] = []
+    # widest pieces first (a heap): near an unresolved multiple root the pieces that
+    # cannot be proven multiply, and a depth-first order would spend the whole budget
+    # there and leave wide, easily proven pieces (and the roots beyond) merged into it
+    heap = [(-(b - a), a, b, max(min_width, (b - a) * 2.0**-24)) for a, b in gaps if b > a]
+    heapq.heapify(heap)
+    while heap:
+        _, x, y, floor = heapq.heappop(heap)
+        if budget <= 0:
+            unproven.append((x, y))
+            continue
+        budget -= 1
+        if _root_free(lo, hi, x, y):
+            continue
+        if y - x <= floor:
+            unproven.append((x, y))
+            continue
+        m = 0.5 * (x + y)
+        heapq.heappush(heap, (-(m - x), x, m, floor))
+        heapq.heappush(heap, (-(y - m), m, y, floor))
+    if not unproven:
+        return boxes
+    for x, y in unproven:
+        boxes.append([x, y, None, 0, False])
+    return _merge_touching(boxes)
+
+
+def _merge_touching(boxes: list[list]) -> list[list]:
+    """Merge touching boxes, and uncertified ones closer than their width (the hull of
+    the unproven fragments around one multiple root is one enclosure)."""
+    boxes.sort(key=lambda b: b[0])
+    out: list[list] = []
+    for box in boxes:
+        near = out and not box[4] and not out[-1][4] and box[0] - out[-1][1] <= max(box[1] - box[0], out[-1][1] - out[-1][0])
+        if out and (box[0] <= out[-1][1] or near):
+            prev = out[-1]
+            m = prev[3] + box[3]
+            ts = [(p[2], p[3]) for p in (prev, box) if p[2] is not None and p[3] > 0]
+            t = sum(tt * mm for tt, mm in ts) / sum(mm for _, mm in ts) if ts else None
+            cert = False
+            out[-1] = [prev[0], max(prev[1], box[1]), t, m, cert]
+        else:
+            out.append(list(box))
+    return out
+
+
+# ---------------------------------------------------------------- public entry
+def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify: bool = True) -> list[Root]:
+    """Real roots in [0, 1] of a polynomial in Bernstein form, with certified enclosures.
+
+    Parameters
+    ----------
+    coeffs : sequence of exact numbers (ints, ``"p/q"`` strings, Fractions, floats = their binary value)
+        Bernstein coefficients on [0, 1].
+    method : "isolate" (notes 9.2, default) or "marching" (notes 9.1)
+    tol : float
+        Parameter tolerance of the float methods.
+    certify : bool
+        With False, the raw float roots come back (``interval = (t, t)``, nothing
+        proven); used to time the float methods alone.
+
+    Returns
+    -------
+    list of Root (see :class:`Root` and :func:`certify_roots` for the guarantees).
+
+    Examples
+    --------
+    >>> r = bernstein_roots([-1, 0, 1])          # 2t - 1
+    >>> r[0].certified, r[0].interval[0] <= 0.5 <= r[0].interval[1]
+    (True, True)
+    """
+    if method not in METHODS:
+        raise InputError(f"unknown root-finding method {method!r}; expected one of {METHODS}")
+    tol = float(tol)
+    if not (tol > 0):
+        raise InputError("tol must be positive")
+    c, ends, y = _prepare(coeffs)
+    if len(c) <= 1:
+        return ends
+    finder = marching_roots if method == "marching" else isolating_roots
+    estimates = finder(y, tol)
+    if not certify:
+        raw = [Root(t, (t, t), m, False, False) for t, m in estimates]
+        return sorted(ends + raw, key=lambda r: r.t)
+    full = coeffs if (isinstance(coeffs, np.ndarray) and coeffs.dtype == object) else as_coefficients(coeffs)
+    return certify_roots(full, estimates, tol)
+
+
+# ---------------------------------------------------------------- 9.4 line ∩ rational curve
+def line_coefficients(curve, line) -> np.ndarray:
+    """Exact Bernstein coefficients ``f_i = w_i (a x_i + b y_i + c)`` (notes 9.4).
+
+    ``line = (a, b, c)`` is the line ``a x + b y + c = 0`` (homogeneously ``aX + bY + cW``).
+    """
+    if curve.dimension != 2:
+        raise DimensionError(f"line_roots needs a planar curve, got dimension {curve.dimension}")
+    if len(line) != 3:
+        raise InputError("a line is given as (a, b, c) for a x + b y + c = 0")
+    a, b, c = (to_rational(v, where="line coefficient") for v in line)
+    if a == 0 and b == 0:
+        raise InputError("(0, 0, c) is not a line")
+    hom = curve.homogeneous()
+    return np.array([a * h[0] + b * h[1] + c * h[2] for h in hom], dtype=object)
+
+
+def line_roots(curve, line, method: str = "isolate", tol: float = 1e-12) -> list[Root]:
+    """Parameters where a (rational) planar Bézier curve meets a line (notes 9.4).
+
+    >>> from exactcagd import BezierCurve
+    >>> arc = BezierCurve([[1, 0], [1, 1], [0, 1]], weights=[1, 1, 2])
+    >>> [r.certified for r in line_roots(arc, (1, -1, 0))]       # x = y
+    [True]
+    """
+    f = line_coefficients(curve, line)
+    if all(x == 0 for x in f):
+        raise InputError("the curve lies on the line: every parameter is a root")
+    return bernstein_roots(f, method=method, tol=tol)
+
+
+def derivative_coefficients(c: np.ndarray) -> np.ndarray:
+    """Exact hodograph of a scalar Bernstein polynomial (notes 2.7) — convenience re-export."""
+    return derivative(c)

@@ -1,0 +1,293 @@
+"""Bernstein root finding (notes ch. 9): float methods with certified enclosures, exact VCA.
+
+References are independent of the code under test: flint's certified complex root
+isolation (``exact.algebraic.real_roots``), sympy factorization/expansion, and
+polynomials built from planted roots.
+"""
+
+import math
+import random
+
+import numpy as np
+import pytest
+import sympy
+from gmpy2 import mpq
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from exactcagd import BezierCurve
+from exactcagd.errors import DimensionError, InputError
+from exactcagd.exact.algebraic import real_roots
+from exactcagd.exact.bernstein import as_coefficients, from_power, product
+from exactcagd.numeric.descartes import isolate_exact, sign_variations
+from exactcagd.numeric.roots import (
+    bernstein_roots,
+    deflate_left,
+    deflate_right,
+    isolating_roots,
+    line_roots,
+    marching_roots,
+)
+
+T = sympy.Symbol("t")
+METHODS = ("marching", "isolate")
+
+
+def flint_roots(coeffs):
+    """Exact real roots in [0, 1] with multiplicities, via the power basis and flint."""
+    n = len(coeffs) - 1
+    poly = sympy.Poly(
+        sympy.expand(sum(sympy.Rational(str(c)) * sympy.binomial(n, i) * T**i * (1 - T) ** (n - i) for i, c in enumerate(coeffs))), T
+    )
+    power = [mpq(str(c)) for c in reversed(poly.all_coeffs())]
+    return real_roots(power, 0, 1)
+
+
+def planted(roots_mults, lead=1):
+    c = as_coefficients([lead])
+    for r, m in roots_mults:
+        r = mpq(r)
+        for _ in range(m):
+            c = product(c, as_coefficients([-r, 1 - r]))
+    return c
+
+
+def check_enclosures(coeffs, found):
+    exact = flint_roots(list(coeffs))
+    for r, m in exact:
+        assert any(x.contains(r) for x in found), (str(r), found)
+    for x in found:
+        inside = [(r, m) for r, m in exact if x.contains(r)]
+        if x.certified:
+            assert len(inside) == 1 and inside[0][1] == x.multiplicity, (x, [str(r) for r, _ in inside])
+        if x.exists:
+            assert inside, x
+    return exact
+
+
+# ------------------------------------------------------------------ fixed examples
+@pytest.mark.parametrize("method", METHODS)
+def test_quadratic_irrational_roots(method):
+    # 8t^2 - 8t + 1: roots (2 -+ sqrt 2)/4
+    found = bernstein_roots([1, -3, 1], method=method)
+    assert [r.certified for r in found] == [True, True]
+    exact = [(2 - sympy.sqrt(2)) / 4, (2 + sympy.sqrt(2)) / 4]
+    for r, e in zip(found, exact):
+        lo, hi = r.interval
+        assert sympy.Rational(lo) <= e <= sympy.Rational(hi)
+        assert abs(r.t - float(e)) < 1e-13
+        assert r.width < 1e-10
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_notes_figure_9_2_example(method):
+    """Notes 9.2, Fig. 9.2: degree 5, simple roots 0, 0.2, 1 and a double root 0.6."""
+    c = planted([(0, 1), ("1/5", 1), ("3/5", 2), (1, 1)])
+    found = bernstein_roots(c, method=method)
+    check_enclosures(c, found)
+    ends = [r for r in found if r.interval in ((0.0, 0.0), (1.0, 1.0))]
+    assert [(r.t, r.multiplicity, r.certified) for r in ends] == [(0.0, 1, True), (1.0, 1, True)]
+    simple = [r for r in found if r.certified and r.interval[0] > 0 and r.interval[1] < 1]
+    assert len(simple) == 1 and abs(simple[0].t - 0.2) < 1e-12
+    double = [r for r in found if r.contains(mpq(3, 5))]
+    assert len(double) == 1 and abs(double[0].t - 0.6) < 1e-6
+
+
+def test_isolating_detects_double_root_multiplicity():
+    c = planted([("1/3", 2), ("3/4", 1)])
+    raw = isolating_roots([float(x) for x in c])
+    mults = {round(t, 6): m for t, m in raw}
+    assert mults.get(round(1 / 3, 6)) == 2 and mults.get(0.75) == 1
+
+
+def test_marching_steps_from_the_left_never_past_a_root():
+    """Notes 9.1: marching approaches each root from the left and cannot skip one."""
+    c = planted([("1/10", 1), ("1/9", 1), ("1/2", 1), ("51/100", 1)])
+    raw = marching_roots([float(x) for x in c])
+    assert [round(t, 10) for t, _ in raw] == [0.1, round(1 / 9, 10), 0.5, 0.51]
+
+
+def test_exact_endpoint_roots_and_multiplicity():
+    c = planted([(0, 3), ("1/2", 1), (1, 2)])
+    found = bernstein_roots(c)
+    assert found[0].interval == (0.0, 0.0) and found[0].multiplicity == 3 and found[0].certified
+    assert found[-1].interval == (1.0, 1.0) and found[-1].multiplicity == 2
+    check_enclosures(c, found)
+
+
+def test_no_roots_and_constant():
+    assert bernstein_roots([1, 2, 3]) == []
+    assert bernstein_roots([5]) == []
+
+
+def test_certify_false_returns_raw_estimates():
+    raw = bernstein_roots([1, -3, 1], certify=False)
+    assert [r.certified for r in raw] == [False, False] and raw[0].interval == (raw[0].t, raw[0].t)
+
+
+# ------------------------------------------------------------------ deflation (9.1)
+@pytest.mark.parametrize("n", [1, 2, 3, 5, 8])
+def test_deflation_formula_against_sympy(n):
+    rng = random.Random(n)
+    c = as_coefficients([0] + [rng.randint(-9, 9) for _ in range(n)])
+    d = deflate_left(c)
+    bern = lambda cs, m: sum(sympy.Rational(str(x)) * sympy.binomial(m, i) * T**i * (1 - T) ** (m - i) for i, x in enumerate(cs))
+    assert sympy.expand(bern(c, n) - T * bern(d, n - 1)) == 0
+    c2 = as_coefficients([rng.randint(-9, 9) for _ in range(n)] + [0])
+    d2 = deflate_right(c2)
+    assert sympy.expand(bern(c2, n) - (1 - T) * bern(d2, n - 1)) == 0
+
+
+# ------------------------------------------------------------------ 9.4 line / rational curve
+def test_line_meets_rational_quarter_circle_exactly_once():
+    arc = BezierCurve([[1, 0], [1, 1], [0, 1]], weights=[1, 1, 2])
+    (r,) = line_roots(arc, (1, -1, 0))
+    assert r.certified
+    # the curve at the root is (sqrt2/2, sqrt2/2): x(t) = y(t); check with sympy
+    x, y = arc.to_sympy(T)
+    sols = [s for s in sympy.solve(sympy.together(x - y), T) if s.is_real and 0 <= s <= 1]
+    assert len(sols) == 1 and r.interval[0] <= float(sols[0]) <= r.interval[1]
+
+
+def test_line_roots_bad_input():
+    arc = BezierCurve([[1, 0], [1, 1], [0, 1]])
+    with pytest.raises(InputError):
+        line_roots(arc, (0, 0, 1))
+    with pytest.raises(InputError):
+        line_roots(arc, (1, 0))
+    with pytest.raises(InputError):
+        line_roots(BezierCurve([[0, 0], [1, 0]]), (0, 1, 0))  # the curve lies on the line
+    with pytest.raises(DimensionError):
+        line_roots(BezierCurve([[0, 0, 0], [1, 0, 0]]), (1, 0, 0))
+
+
+def test_bad_input():
+    with pytest.raises(InputError):
+        bernstein_roots([0, 0, 0])
+    with pytest.raises(InputError):
+        bernstein_roots([1, -1], method="newton")
+    with pytest.raises(InputError):
+        bernstein_roots([1, -1], tol=0)
+    with pytest.raises(DimensionError):
+        bernstein_roots([[1, 2], [3, 4]])
+    with pytest.raises(InputError):
+        isolate_exact([0, 0])
+
+
+# ------------------------------------------------------------------ exact VCA
+def test_sign_variations():
+    assert sign_variations([1, 0, -2, 0, 3, 3, -1]) == 3
+    assert sign_variations([0, 0]) == 0
+
+
+def test_vca_worked_example():
+    found = isolate_exact(planted([(0, 2), ("1/2", 1), ("1/3", 3)]))
+    assert [(str(r.lo), str(r.hi), r.multiplicity) for r in found if r.is_rational] == [("0", "0", 2), ("1/2", "1/2", 1)]
+    (third,) = [r for r in found if not r.is_rational]
+    assert third.multiplicity == 3 and third.lo < mpq(1, 3) < third.hi
+
+
+def assert_vca_matches(coeffs):
+    vca = isolate_exact(coeffs)
+    ref = flint_roots(list(coeffs))
+    assert len(vca) == len(ref)
+    for r, m in ref:
+        hits = [x for x in vca if x.contains(r)]
+        assert len(hits) == 1 and hits[0].multiplicity == m
+
+
+coeff_lists = st.lists(st.integers(-9, 9), min_size=2, max_size=9).filter(lambda c: any(c))
+root_lists = st.lists(st.tuples(st.fractions(0, 1, max_denominator=12), st.integers(1, 3)), min_size=1, max_size=4)
+
+
+@settings(max_examples=40, deadline=None)
+@given(coeff_lists)
+def test_vca_matches_flint_random(coeffs):
+    assert_vca_matches(as_coefficients(coeffs))
+
+
+@settings(max_examples=25, deadline=None)
+@given(root_lists)
+def test_vca_matches_flint_planted(rm):
+    assert_vca_matches(planted(rm))
+
+
+# ------------------------------------------------------------------ properties of the float methods
+@settings(max_examples=15, deadline=None)
+@given(coeff_lists, st.sampled_from(METHODS))
+def test_enclosures_hold_random(coeffs, method):
+    check_enclosures(as_coefficients(coeffs), bernstein_roots(coeffs, method=method))
+
+
+@settings(max_examples=10, deadline=None)
+@given(root_lists, st.sampled_from(METHODS))
+def test_enclosures_hold_planted(rm, method):
+    c = planted(rm)
+    found = bernstein_roots(c, method=method)
+    exact = check_enclosures(c, found)
+    # simple, well separated planted roots are certified and accurate
+    for r, m in exact:
+        if m == 1 and all(abs(float(r) - float(o)) > 1e-3 for o, _ in exact if o != r):
+            hit = [x for x in found if x.contains(r)]
+            assert hit[0].certified and abs(hit[0].t - float(r)) < 1e-9
+
+
+def test_bernstein_beats_power_form_on_wilkinson_roots():
+    """Notes ch. 9 ([FR87]): for roots in [0, 1] the Bernstein form is better conditioned.
+
+    Wilkinson-like p(t) = prod (t - k/20): the float roots from Bernstein coefficients
+    are far more accurate than numpy's companion-matrix roots of the power form."""
+    n = 20
+    c = planted([(mpq(k, n), 1) for k in range(1, n)])
+    found = bernstein_roots(c, method="isolate")
+    err_b = max(abs(r.t - k / n) for r, k in zip(found, range(1, n)))
+    power = [float(x) for x in np.polynomial.polynomial.polyfromroots([k / n for k in range(1, n)])]
+    pr = np.sort(np.roots(power[::-1]).real)
+    err_p = max(abs(pr - np.arange(1, n) / n))
+    assert len(found) == n - 1 and all(r.certified for r in found)
+    assert all(r.contains(mpq(k, n)) for r, k in zip(found, range(1, n)))
+    # attainable accuracy: the first-order condition bound of the rounded Bernstein
+    # coefficients, cond(r) u = u sum |c_i| B_i(r) / |p'(r)| (exact, independent of the code)
+    # is ~4e-10 at r = 1/2, so the former 1e-12 threshold was below what float64
+    # coefficients determine; each root must be within 4 cond(r) u.
+    deg = len(c) - 1
+    for r, k in zip(found, range(1, n)):
+        x = mpq(k, n)
+        size = sum(abs(c[i]) * math.comb(deg, i) * x**i * (1 - x) ** (deg - i) for i in range(deg + 1))
+        slope = abs(math.prod(x - mpq(j, n) for j in range(1, n) if j != k))
+        assert abs(r.t - k / n) <= 4 * float(size / slope) * 2.0**-53 + 1e-16
+    assert err_b < 1e-10 and err_p > 100 * err_b
+
+
+def test_marching_terminates_on_clustered_roots():
+    """Regression: a stalled march used to recurse through marching on the derivative,
+    the second derivative, ... (never finished on Wilkinson-like degree 15)."""
+    n = 16
+    c = planted([(mpq(k, n), 1) for k in range(1, n)])
+    found = bernstein_roots(c, method="marching")
+    assert all(any(r.contains(mpq(k, n)) for r in found) for k in range(1, n))
+    assert sum(r.certified for r in found) == n - 1
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", range(4))
+def test_enclosures_hold_many_random(seed):
+    rng = random.Random(seed)
+    for _ in range(250):
+        kind = rng.randrange(3)
+        if kind == 0:
+            c = as_coefficients([rng.randint(-99, 99) for _ in range(rng.randint(2, 16))])
+            if not any(c):
+                continue
+        else:
+            c = planted([(mpq(rng.randint(0, 64), 64), rng.randint(1, 3 if kind == 2 else 1)) for _ in range(rng.randint(1, 6))])
+        for method in METHODS:
+            check_enclosures(c, bernstein_roots(c, method=method))
+        assert_vca_matches(c)
+
+
+def test_from_power_reference_is_consistent():
+    # sanity of the test helper: planted roots come back from the flint route
+    c = planted([("1/4", 1), ("2/3", 2)])
+    assert [(str(r), m) for r, m in flint_roots(list(c))] == [("1/4", 1), ("2/3", 2)]
+    assert from_power(as_coefficients([0, 1])).tolist() == [0, 1]
