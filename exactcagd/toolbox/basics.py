@@ -21,6 +21,8 @@ every rational rotation matrix is the one of a rational quaternion
 
 from __future__ import annotations
 
+import itertools
+
 from dataclasses import dataclass
 
 import numpy as np
@@ -570,14 +572,20 @@ def _rational_point(conic: Conic):
     for c in conic.coefficients:
         den = den * int(c.denominator) // _gcd(den, int(c.denominator))
     a, b, c, d, e, f = (int(x * den) for x in conic.coefficients)
-    form = a * X**2 + b * X * Y + c * Y**2 + d * X * W + e * Y * W + f * W**2
-    sol = diop_ternary_quadratic(form)
-    if sol is None or sol == (None, None, None) or all(s == 0 for s in sol):
-        return None
-    subs = dict(zip((X, Y, W), sol))
-    if form.subs(subs) != 0:  # pragma: no cover - sympy guarantees a solution
-        return None
-    return tuple(mpq(int(s)) for s in sol)
+    # sympy 1.14 can return a non-solution for some variable orders (e.g. 2x^2 - y^2 + 2w^2
+    # gives (1, 2, 0)): try every order of the coefficients and keep a verified solution
+    symbols = (X, Y, W)
+    for perm in itertools.permutations(range(3)):
+        renamed = dict(zip(symbols, (symbols[k] for k in perm)))
+        form = (a * X**2 + b * X * Y + c * Y**2 + d * X * W + e * Y * W + f * W**2).xreplace(renamed)
+        sol = diop_ternary_quadratic(form)
+        if sol is None or None in sol or all(v == 0 for v in sol):
+            continue
+        values = dict(zip(symbols, sol))  # sympy answers in the sorted order x1, x2, x3
+        point = tuple(values[renamed[v]] for v in symbols)
+        if a * point[0] ** 2 + b * point[0] * point[1] + c * point[1] ** 2 + d * point[0] * point[2] + e * point[1] * point[2] + f * point[2] ** 2 == 0:
+            return tuple(mpq(int(v)) for v in point)
+    return None
 
 
 def parametrize_conic(conic, point=None) -> tuple[list, list, list]:
