@@ -25,6 +25,7 @@ from exactcagd.algebra import (
     l_matrix,
 )
 from exactcagd.algebra._diagnostics import ImproperParametrizationError
+from exactcagd.algebra.traces import trace_bezout
 from proofs._ledger import claim, erratum, verified, verified_range
 
 DOC = "sederberg"
@@ -102,7 +103,11 @@ def _sympy_components(curve):
 
 
 # ---------------------------------------------------------------- 17.5
-@claim(DOC, "17.5", "example 1", "R(p, q) = |2, x-y-3; x-y-3, 2x-2| = -x^2 + 2xy - y^2 + 10x - 6y - 13; t = (-x+y+3)/2 = (-2x+2)/(x-y-3)")
+def _trace_example_1():
+    trace_bezout(-t**2 + x - 1, -t**2 - 2 * t + y + 2, t)
+
+
+@claim(DOC, "17.5", "example 1", "R(p, q) = |2, x-y-3; x-y-3, 2x-2| = -x^2 + 2xy - y^2 + 10x - 6y - 13; t = (-x+y+3)/2 = (-2x+2)/(x-y-3)", trace=_trace_example_1)
 def implicitization_example_1():
     p = [x - 1, 0, -1]  # -t^2 + (x - 1)
     q = [y + 2, -2, -1]  # -t^2 - 2t + (y + 2)
@@ -122,7 +127,11 @@ _Y2 = 39 * t**3 - 69 * t**2 + 33 * t + 1
 _W2 = -3 * t**2 + 3 * t + 1
 
 
-@claim(DOC, "17.5", "example 2", "3x3 Bezout matrix of p(x,t), q(y,t) and f(x,y) = -156195x^3 + 60426x^2y - ... + 15631624")
+def _trace_example_2():
+    trace_bezout(sp.expand(_W2 * x - _X2), sp.expand(_W2 * y - _Y2), t)
+
+
+@claim(DOC, "17.5", "example 2", "3x3 Bezout matrix of p(x,t), q(y,t) and f(x,y) = -156195x^3 + 60426x^2y - ... + 15631624", trace=_trace_example_2)
 def implicitization_example_2():
     P = sp.Poly(sp.expand(_W2 * x - _X2), t).all_coeffs()[::-1]
     Q = sp.Poly(sp.expand(_W2 * y - _Y2), t).all_coeffs()[::-1]

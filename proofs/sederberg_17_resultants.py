@@ -26,6 +26,7 @@ from exactcagd.algebra import (
     sylvester_matrix,
 )
 from exactcagd.algebra.resultants import bezout_sign, echelon_bareiss
+from exactcagd.algebra.traces import trace_bezout
 from proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -129,7 +130,11 @@ def degree_two_auxiliary():
     )
 
 
-@claim(DOC, "17.3.3", "(17.8)-(17.9)", "Bezout matrix [[4,-10],[-10,22]] of t^2-7t+12, t^2-3t+2 has det -12 (sign differs from (17.3))")
+def _trace_quadratic():
+    trace_bezout(t**2 - 7 * t + 12, t**2 - 3 * t + 2, t)
+
+
+@claim(DOC, "17.3.3", "(17.8)-(17.9)", "Bezout matrix [[4,-10],[-10,22]] of t^2-7t+12, t^2-3t+2 has det -12 (sign differs from (17.3))", trace=_trace_quadratic)
 def degree_two_example():
     M = _bez(t**2 - 7 * t + 12, t**2 - 3 * t + 2)
     assert M == sp.Matrix([[4, -10], [-10, 22]]) and M.det() == -12
@@ -170,7 +175,12 @@ def degree_three_auxiliary():
     return verified("h1, h2, h3 expand as printed (symbolic); det(printed 3x3) = -det(Sylvester 6x6) on 10 random integer cubics")
 
 
-@claim(DOC, "17.3.4", "examples", "R = -1611 for t^3-2t^2+3t+1, 2t^3+3t^2-t+4; R = 0 for t^3-t^2-11t-4, 2t^3-7t^2-5t+4")
+def _trace_cubics():
+    trace_bezout(t**3 - 2 * t**2 + 3 * t + 1, 2 * t**3 + 3 * t**2 - t + 4, t)
+    trace_bezout(t**3 - t**2 - 11 * t - 4, 2 * t**3 - 7 * t**2 - 5 * t + 4, t)
+
+
+@claim(DOC, "17.3.4", "examples", "R = -1611 for t^3-2t^2+3t+1, 2t^3+3t^2-t+4; R = 0 for t^3-t^2-11t-4, 2t^3-7t^2-5t+4", trace=_trace_cubics)
 def degree_three_examples():
     M1 = _bez(t**3 - 2 * t**2 + 3 * t + 1, 2 * t**3 + 3 * t**2 - t + 4)
     M2 = _bez(t**3 - t**2 - 11 * t - 4, 2 * t**3 - 7 * t**2 - 5 * t + 4)

@@ -17,6 +17,7 @@ from exactcagd import BezierCurve
 from exactcagd.algebra import double_point_cubic, double_points_quartic, implicitize, moving_line_matrix, mu_basis, zeroing_process
 from exactcagd.algebra.moving_lines import MovingLine, _lines_of_degree, cross, homogeneous_control_points, moving_line_following
 from exactcagd.algebra._poly import curve_power
+from exactcagd.algebra.traces import trace_zeroing
 from proofs._ledger import claim, erratum, not_checkable, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -43,6 +44,21 @@ def _as_sympy_rows(M):
 CUBIC = BezierCurve([[0, 0], [0, 1], [1, 2], [3, 0]])  # figure 18.11
 QUARTIC = BezierCurve([[0, 0], [0, 1], [1, 2], [3, 2], [2, 0]])  # figure 18.12 (reconstructed)
 QUARTIC_TRIPLE = BezierCurve([[0, 0], [0, 1], [1, 2], [3, 2], [3, -2]])  # figure 18.13 (reconstructed)
+
+
+QUINTIC = BezierCurve([[0, 0], [1, 3], [2, -1], [4, 2], [5, 5], [6, 0]], weights=[1, 2, 1, 3, 1, 1])  # a generic quintic
+
+
+def _trace_cubic():
+    trace_zeroing(CUBIC)
+
+
+def _trace_quartic():
+    trace_zeroing(QUARTIC)
+
+
+def _trace_quintic():
+    trace_zeroing(QUINTIC)
 
 
 # ---------------------------------------------------------------- 18.1
@@ -240,7 +256,7 @@ def cubic_double_point_pencil():
     return verified("symbolic; P(1) = P(-1) = (3, 0)")
 
 
-@claim(DOC, "18.4.3", "(18.61)-(18.66)", "matrix of quadratic moving lines; zeroing gives the pencil (0,3,0)(1-t) + (3,3,-9)t with axis -9(3,0,1): double point (3, 0)")
+@claim(DOC, "18.4.3", "(18.61)-(18.66)", "matrix of quadratic moving lines; zeroing gives the pencil (0,3,0)(1-t) + (3,3,-9)t with axis -9(3,0,1): double point (3, 0)", trace=_trace_cubic)
 def cubic_zeroing():
     P = homogeneous_control_points(CUBIC)
     M = _as_sympy_rows(moving_line_matrix(P))
@@ -274,7 +290,7 @@ def quartic_matrix():
     )
 
 
-@claim(DOC, "18.4.4", "(18.68)-(18.69)", "zeroing leaves two quadratic moving lines [(0,2,0),(4,4,-8),(4,-2,-8)] and [(8,6,0),(28,4,-24),(20,-14,-40)]")
+@claim(DOC, "18.4.4", "(18.68)-(18.69)", "zeroing leaves two quadratic moving lines [(0,2,0),(4,4,-8),(4,-2,-8)] and [(8,6,0),(28,4,-24),(20,-14,-40)]", trace=_trace_quartic)
 def quartic_two_quadratics():
     P = homogeneous_control_points(QUARTIC)
     Pt = _bern(P)
@@ -350,7 +366,7 @@ def quartic_triple_point():
     )
 
 
-@claim(DOC, "18.4.5", "(18.78)-(18.84)", "an n-parameter family of degree n-1 moving lines; zeroing leaves degrees (m, m) for n = 2m and (m+1, m) for n = 2m+1")
+@claim(DOC, "18.4.5", "(18.78)-(18.84)", "an n-parameter family of degree n-1 moving lines; zeroing leaves degrees (m, m) for n = 2m and (m+1, m) for n = 2m+1", trace=_trace_quintic)
 def general_zeroing():
     r = random.Random(1878)
     for n in range(2, 9):
@@ -370,7 +386,7 @@ def general_zeroing():
     return verified_range("n = 2..8, random rational curves", "dimension n at degree n - 1; degrees of the final pair as stated; both follow the curve; (18.82)")
 
 
-@claim(DOC, "18.4.6", "(18.85)-(18.87)", "the 2 x 2 resultant of the two quadratic moving lines is 512(y^4 + 4x^3 + 2xy^2 - 16x^2 - 6y^2 + 16x)")
+@claim(DOC, "18.4.6", "(18.85)-(18.87)", "the 2 x 2 resultant of the two quadratic moving lines is 512(y^4 + 4x^3 + 2xy^2 - 16x^2 - 6y^2 + 16x)", trace=_trace_quartic)
 def quartic_moving_line_implicit():
     a = [2 * y, 4 * x + 4 * y - 8, 4 * x - 2 * y - 8]
     b = [8 * x + 6 * y, 28 * x + 4 * y - 24, 20 * x - 14 * y - 40]

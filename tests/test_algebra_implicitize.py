@@ -143,3 +143,23 @@ def test_bad_input():
         implicitize(BezierCurve([[0, 0], [1, 1]]), method="gauss")
     with pytest.raises(WeightError):
         curve_from_polynomials(t, t**2, t)  # w(t) = t has a zero Bernstein coefficient
+
+
+def test_strict_mode_rejects_degenerate_parametrizations():
+    from exactcagd.algebra import BasePointError, ImproperParametrizationError
+    from exactcagd.errors import InputError as _InputError
+
+    f = t - sp.Rational(1, 3)
+    based = curve_from_polynomials(sp.expand(f * (t + 1)), sp.expand(f * (2 * t - 3)), sp.expand(f * (t + 2)))
+    improper = curve_from_polynomials(t**2, t**4 + t**2)  # y = x^2 + x traced twice
+    for m in ROUTES:
+        with pytest.raises(BasePointError):
+            implicitize(based, m, strict=True)
+        with pytest.raises(ImproperParametrizationError, match=r"F\^2"):
+            implicitize(improper, m, strict=True)
+    assert issubclass(BasePointError, _InputError) and issubclass(ImproperParametrizationError, _InputError)
+    # a proper cubic passes strict mode unchanged; the equation vanishes on it (sympy substitution)
+    c = BezierCurve([[1, 0], [5, 0], [5, 2], [4, 3]])
+    F = implicitize(c, strict=True)
+    X, Y = (sp.expand(e) for e in c.to_sympy(t))
+    assert sp.simplify(F.as_expr().subs({x: X, y: Y}, simultaneous=True)) == 0

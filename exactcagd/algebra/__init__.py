@@ -14,15 +14,20 @@ Public entry points (stable signatures)::
     groebner(polys, gens, order="lex")            # or "grevlex", "grlex"
     intersect(curve1, curve2)                     # exact (t1, t2, multiplicity, point)
 
+Derivation traces: :func:`trace_bezout` (Bezout matrix construction, 17.3-17.5) and
+:func:`trace_zeroing` (moving-line zeroing process, (18.78)-(18.87)) print every
+intermediate exact object.
+
 Conventions
 -----------
 * Implicit equations are sympy ``Poly`` in ``x, y`` over ZZ, primitive, with positive
   leading coefficient in graded reverse lexicographic order (``x > y``).
 * Irrational results are :class:`~exactcagd.exact.algebraic.RealAlgebraic`.
 * Degenerate input: constant curve -> :class:`~exactcagd.errors.DegreeError`;
-  common factor of ``X, Y, W`` -> :class:`BasePointWarning` (factor removed);
+  common factor of ``X, Y, W`` -> :class:`BasePointWarning` (factor removed;
+  ``strict=True``: :class:`BasePointError`);
   improper parametrization -> :class:`ImproperParametrizationWarning` from
-  implicitization (the reduced equation is returned, the index is in
+  implicitization (``strict=True``: :class:`ImproperParametrizationError`) (the reduced equation is returned, the index is in
   :func:`implicit_equation`) and :class:`ImproperParametrizationError` from
   inversion / double points.
 
@@ -37,6 +42,7 @@ x**3 + 3*x**2*y - 3*x**2 + 3*x*y**2 - 30*x*y + 3*x + y**3 - 3*y**2 + 27*y - 1
 
 from ._diagnostics import (
     AlgebraWarning,
+    BasePointError,
     BasePointWarning,
     ImproperParametrizationError,
     ImproperParametrizationWarning,
@@ -79,6 +85,7 @@ from .resultants import (
 from .singularities import SingularPoint, curve_discriminant, genus, line_section, singular_points
 from .solve import common_points, solve_bivariate
 from .surfaces import SurfaceParametrization, base_point_count, implicitize_surface
+from .traces import trace_bezout, trace_zeroing
 
 __all__ = [
     # stable entry points
@@ -153,8 +160,12 @@ __all__ = [
     "undetermined_coefficients",
     "conic_through_points",
     "circle_through_points",
+    # derivation traces (teaching mode, ``exactcagd verify --trace``)
+    "trace_bezout",
+    "trace_zeroing",
     # diagnostics
     "AlgebraWarning",
+    "BasePointError",
     "BasePointWarning",
     "ImproperParametrizationWarning",
     "ImproperParametrizationError",

@@ -25,5 +25,9 @@ class ImproperParametrizationWarning(AlgebraWarning):
     """The parametrization is not proper: its resultant is a power F^r, r > 1."""
 
 
+class BasePointError(InputError):
+    """Strict mode: the parametrization has base points (a common factor of X, Y, W)."""
+
+
 class ImproperParametrizationError(InputError):
     """The operation needs a proper (generically one-to-one) parametrization."""

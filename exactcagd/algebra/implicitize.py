@@ -38,7 +38,7 @@ import flint
 import sympy
 
 from ..errors import InputError
-from ._diagnostics import BasePointWarning, ImproperParametrizationWarning
+from ._diagnostics import BasePointError, BasePointWarning, ImproperParametrizationError, ImproperParametrizationWarning
 from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, mpoly_to_sympy, normalize_implicit
 from .resultants import bezout_matrix_bernstein, det_bareiss, resultant_coeffs
 
@@ -228,11 +228,21 @@ def _finish(R, g, n: int) -> ImplicitEquation:
     return ImplicitEquation(mpoly_to_sympy(F, (X_SYM, Y_SYM)), F, int(F.total_degree()), r, g, n)
 
 
-def implicit_equation(curve, method: str = "resultant") -> ImplicitEquation:
-    """Implicit equation with diagnostics (index of the parametrization, base factor)."""
+def implicit_equation(curve, method: str = "resultant", strict: bool = False) -> ImplicitEquation:
+    """Implicit equation with diagnostics (index of the parametrization, base factor).
+
+    ``strict=True`` rejects degenerate parametrizations instead of warning:
+    :class:`BasePointError` for a common factor of ``X, Y, W`` and
+    :class:`ImproperParametrizationError` when the resultant is a power ``F^r``.
+    """
     if method not in ROUTES:
         raise InputError(f"unknown implicitization method {method!r}; choose one of {ROUTES}")
-    X, Y, W, g = reduced_components(curve)
+    if strict:
+        X, Y, W, g = reduced_components(curve, warn=False)
+        if g.degree() > 0:
+            raise BasePointError(f"the parametrization has base points: X, Y, W share the factor {g} (notes 18.3.4)")
+    else:
+        X, Y, W, g = reduced_components(curve)
     n = max(p.degree() for p in (X, Y, W))
     if method == "resultant":
         R = implicit_resultant(X, Y, W)
@@ -240,10 +250,20 @@ def implicit_equation(curve, method: str = "resultant") -> ImplicitEquation:
         R = implicit_bezier(X, Y, W)
     else:
         R = implicit_moving_lines(X, Y, W)
+    if strict:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ImproperParametrizationWarning)
+            eq = _finish(R, g, n)
+        if eq.index > 1:
+            raise ImproperParametrizationError(
+                f"the parametrization is not proper: the resultant is F^{eq.index} with F = {eq.poly.as_expr()} "
+                f"(the curve is traced {eq.index} times)"
+            )
+        return eq
     return _finish(R, g, n)
 
 
-def implicitize(curve, method: str = "resultant") -> sympy.Poly:
+def implicitize(curve, method: str = "resultant", strict: bool = False) -> sympy.Poly:
     """Implicit equation ``f(x, y) = 0`` of a planar (rational) Bézier curve.
 
     Parameters
@@ -251,6 +271,9 @@ def implicitize(curve, method: str = "resultant") -> sympy.Poly:
     curve : BezierCurve
         planar, polynomial or rational.
     method : ``"resultant"`` (17.5), ``"bezier"`` (17.6) or ``"moving_lines"`` (18.4.6).
+    strict : reject base points (:class:`BasePointError`) and improper
+        parametrizations (:class:`ImproperParametrizationError`, message names the
+        power ``F^r``) instead of warning and returning the reduced equation.
 
     Returns
     -------
@@ -264,4 +287,4 @@ def implicitize(curve, method: str = "resultant") -> sympy.Poly:
     >>> implicitize(quarter, method="moving_lines").as_expr()
     x**2 + y**2 - 1
     """
-    return implicit_equation(curve, method).poly
+    return implicit_equation(curve, method, strict).poly

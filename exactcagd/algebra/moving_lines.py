@@ -292,12 +292,14 @@ class ZeroingResult:
 
     ``steps``: the matrices after each elimination (lists of rows of triples, rows
     zeroed on the left); ``lines``: the final two moving lines (higher degree first),
-    as :class:`MovingLine`; ``degrees``: their degrees.
+    as :class:`MovingLine`; ``degrees``: their degrees; ``ops``: the row operations
+    ``(step, row, pivot_rows, coefficients)``: ``row -= sum c_p * row_p`` (traces).
     """
 
     steps: list
     lines: tuple
     degrees: tuple
+    ops: list = field(default_factory=list)
 
 
 def _combine(rows: list, col: int, pivots: list, target: int) -> list | None:
@@ -349,6 +351,7 @@ def zeroing_process(P: list) -> ZeroingResult:
         line = MovingLine(_power_of_scaled_bernstein(M[0]))
         return ZeroingResult(steps, (line,), (0,))
     s = 0
+    ops = []
     while 2 * s + 2 <= n - 1:
         # rows 2s, 2s+1 are pivots for column s; zero column s in rows >= 2s+2
         piv = [2 * s, 2 * s + 1]
@@ -356,6 +359,7 @@ def zeroing_process(P: list) -> ZeroingResult:
             coef = _combine(M, s, piv, r)
             if coef is None:
                 raise DegreeError("zeroing process: pivot lines are dependent (special curve)")
+            ops.append((s, r, tuple(piv[: len(coef)]), tuple(coef)))
             for col in range(s, n):
                 e = M[r][col]
                 for c, p in zip(coef, piv):
@@ -373,7 +377,7 @@ def zeroing_process(P: list) -> ZeroingResult:
         hi = MovingLine(_power_of_scaled_bernstein(M[n - 2][m - 1 :]))
         lo = MovingLine(_power_of_scaled_bernstein(M[n - 1][m:]))
         lines = (hi, lo)
-    return ZeroingResult(steps, lines, tuple(l.degree for l in lines))
+    return ZeroingResult(steps, lines, tuple(l.degree for l in lines), ops)
 
 
 # ------------------------------------------------------------------------ mu-basis

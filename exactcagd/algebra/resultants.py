@@ -62,14 +62,18 @@ def _exact_div(a, b):
         return a / b
     if isinstance(a, mpq) or isinstance(b, mpq):
         return a / b
+    if isinstance(a, sympy.Basic) or isinstance(b, sympy.Basic):
+        return sympy.expand(sympy.cancel(sympy.sympify(a) / b))  # teaching traces: sympy entries
     return a // b
 
 
-def det_bareiss(matrix):
+def det_bareiss(matrix, on_step=None):
     """Determinant by Bareiss' fraction-free elimination (row pivoting), exactly.
 
-    Entries: Python/flint integers, ``mpq``, or flint multivariate polynomials.
-    Every intermediate entry is a minor of the input (so divisions are exact).
+    Entries: Python/flint integers, ``mpq``, flint multivariate polynomials or (for
+    the teaching traces) sympy polynomial expressions.  Every intermediate entry
+    is a minor of the input (so divisions are exact).  ``on_step(k, pivot, M)`` is
+    called after elimination step ``k`` with the current matrix (traces).
     """
     M = [list(row) for row in matrix]
     n = len(M)
@@ -95,6 +99,8 @@ def det_bareiss(matrix):
                 row_i[j] = _exact_div(num, prev) if not (isinstance(prev, int) and prev == 1) else num
             row_i[k] = _zero(pivot)
         prev = pivot
+        if on_step is not None:
+            on_step(k, pivot, [list(row) for row in M])
     return M[n - 1][n - 1] if sign == 1 else -M[n - 1][n - 1]
 
 
