@@ -9,10 +9,12 @@ Engine (measured, ``benchmarks/bench_algebra.py`` and the table below): python-f
 of magnitude faster than sympy's ``buchberger`` and ``f5b`` on small ideals
 (cyclic-4, katsura-3, curve implicitization) but its lex computations can blow
 up (katsura-4 lex: no result after 100 s, sympy f5b 3 s).  The ``"auto"`` engine
-therefore runs flint with size limits; when a limit is hit it computes a grevlex
-basis (flint, with limits) and converts it to lex by FGLM (sympy
-``matrix_fglm``, zero-dimensional ideals: katsura-4 in 0.8 s), and otherwise
-falls back to sympy's ``f5b``.
+therefore runs flint with size limits.  For lex it first computes the (cheap) grevlex
+basis, which decides the dimension: a zero-dimensional ideal gets flint's lex run and,
+when a limit is hit, FGLM from the grevlex basis (sympy ``matrix_fglm``: katsura-4 in
+0.3-0.8 s); a positive-dimensional one (an elimination, e.g. implicitization) gets
+flint's lex run under tight limits only, since an aborted large run costs more than
+sympy's ``f5b``, which is the fallback.
 
 >>> import sympy
 >>> x, y, z = sympy.symbols("x y z")
@@ -43,6 +45,7 @@ __all__ = [
 
 ORDERS = {"lex": "lex", "grevlex": "degrevlex", "grlex": "deglex"}
 FLINT_LIMITS = (400, 20000, 4096)  # (ideal length, polynomial length, coefficient bits)
+FLINT_LIMITS_POSITIVE_DIM = (60, 2000, 1024)  # lex on positive-dimensional ideals: give up early
 
 
 def _check(gens, order):
@@ -80,9 +83,9 @@ def _lm(P, order):
     return max(P.monoms(), key=key)
 
 
-def _flint_gb(fl, ctx):
+def _flint_gb(fl, ctx, limits=FLINT_LIMITS):
     vec = flint.fmpz_mpoly_vec(fl, ctx)
-    res, ok = vec.buchberger_naive(limits=FLINT_LIMITS)
+    res, ok = vec.buchberger_naive(limits=limits)
     if not ok:
         return None
     return list(res.autoreduction())
@@ -118,16 +121,23 @@ def groebner_basis(polys, gens, order: str = "lex", engine: str = "auto") -> lis
         return _sort([_monic_sympy(p, gens, order) for p in res], order)
     if engine != "auto":
         raise InputError(f"unknown Gröbner engine {engine!r}")
-    res = _flint_gb(fl, ctx)
-    if res is not None:
-        return _sort([_monic_sympy(p, gens, order) for p in res], order)
-    if order == "lex":
+    if order != "lex":
+        res = _flint_gb(fl, ctx)
+        if res is not None:
+            return _sort([_monic_sympy(p, gens, order) for p in res], order)
+    else:
+        # a grevlex basis is cheap and tells the dimension: zero-dimensional ideals get
+        # flint's lex Buchberger, then FGLM; positive-dimensional ones (eliminations) get
+        # flint only under tight limits -- an aborted large lex run costs more than f5b
+        # (benchmarks/results/algebra.md: implicitize n = 4, 48 ms -> see the rerun)
         gctx, gfl = _to_flint(exprs, gens, "grevlex")
         gres = _flint_gb(gfl, gctx)
-        if gres is not None:
-            lms = [tuple(int(e) for e in p.monoms()[0]) for p in gres]
-            if is_zero_dimensional(lms, len(gens)):
-                return _fglm(gres, gens)
+        zero_dim = gres is not None and is_zero_dimensional([tuple(int(e) for e in p.monoms()[0]) for p in gres], len(gens))
+        res = _flint_gb(fl, ctx, FLINT_LIMITS if zero_dim else FLINT_LIMITS_POSITIVE_DIM)
+        if res is not None:
+            return _sort([_monic_sympy(p, gens, order) for p in res], order)
+        if zero_dim:
+            return _fglm(gres, gens)
     G = sympy.groebner(exprs, *gens, order=order, method="f5b")
     return _sort([sympy.Poly(g, *gens, domain="QQ").monic() for g in G.exprs], order)
 
