@@ -24,7 +24,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DimensionError, InputError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import to_rational
+from ..exact.scalars import from_fmpq, to_fmpq, to_rational
 
 __all__ = [
     "X_SYM",
@@ -55,20 +55,12 @@ def zctx(names, order: str = "degrevlex") -> flint.fmpz_mpoly_ctx:
 XY = zctx(("x", "y"))
 
 
-def mpq_of(q) -> mpq:
-    """A flint ``fmpq``/``fmpz`` (or int) as gmpy2 ``mpq``."""
-    if isinstance(q, flint.fmpq):
-        return mpq(int(q.p), int(q.q))
-    return mpq(int(q))
+mpq_of = from_fmpq  # a flint ``fmpq``/``fmpz`` (or int) as gmpy2 ``mpq``
 
 
 def fmpq_poly_of(coeffs) -> flint.fmpq_poly:
     """A flint rational polynomial from exact coefficients (lowest degree first)."""
-    out = []
-    for c in coeffs:
-        q = to_rational(c)
-        out.append(flint.fmpq(int(q.numerator), int(q.denominator)))
-    return flint.fmpq_poly(out)
+    return flint.fmpq_poly([to_fmpq(c) for c in coeffs])
 
 
 def primitive_fmpz_polys(polys) -> list[flint.fmpz_poly]:

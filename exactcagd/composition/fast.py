@@ -37,15 +37,11 @@ import numpy as np
 from gmpy2 import mpq
 
 from ..exact import bernstein as bz
+from ..exact.scalars import to_fmpq as _fmpq
 
 __all__ = ["compose_homogeneous_fast", "scaled", "unscaled"]
 
 _MPQ = type(mpq(0))
-
-
-def _fmpq(x) -> flint.fmpq:
-    x = x if isinstance(x, _MPQ) else mpq(x)
-    return flint.fmpq(int(x.numerator), int(x.denominator))
 
 
 def scaled(c) -> flint.fmpq_poly:

@@ -43,6 +43,7 @@ from gmpy2 import mpq
 from ..errors import DomainError, InputError
 from ..exact import bernstein as bz
 from ..exact.algebraic import RealAlgebraic, real_roots
+from ..exact.scalars import from_fmpq, to_fmpq
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bspline import BSplineCurve
 
@@ -53,11 +54,10 @@ GAP_BITS = 64
 
 
 def _fmpq_poly(coeffs) -> flint.fmpq_poly:
-    return flint.fmpq_poly([flint.fmpq(int(c.numerator), int(c.denominator)) for c in coeffs])
+    return flint.fmpq_poly([to_fmpq(c) for c in coeffs])
 
 
-def _to_mpq(x) -> mpq:
-    return mpq(int(x.p), int(x.q))
+_to_mpq = from_fmpq
 
 
 def _coeffs(p: flint.fmpq_poly) -> list:

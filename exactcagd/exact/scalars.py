@@ -28,6 +28,7 @@ import sys
 import threading
 from fractions import Fraction
 
+import flint
 import gmpy2
 from gmpy2 import mpq, mpz
 
@@ -42,6 +43,8 @@ __all__ = [
     "get_float_policy",
     "to_fraction",
     "to_sympy",
+    "to_fmpq",
+    "from_fmpq",
     "rational_str",
     "to_float",
 ]
@@ -290,6 +293,27 @@ def to_sympy(x: Rational):
 def rational_str(x: Rational) -> str:
     """Return ``"p/q"`` (or ``"p"`` for integers): the exchange format of exact data."""
     return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
+
+
+def to_fmpq(x) -> flint.fmpq:
+    """An exact number as python-flint's ``fmpq`` (through :func:`to_rational`).
+
+    >>> to_fmpq("3/7")
+    3/7
+    """
+    x = x if isinstance(x, Rational) else to_rational(x)
+    return flint.fmpq(int(x.numerator), int(x.denominator))
+
+
+def from_fmpq(x) -> Rational:
+    """python-flint's ``fmpq`` or ``fmpz`` (or an int) as ``gmpy2.mpq``.
+
+    >>> from_fmpq(to_fmpq("-5/4"))
+    mpq(-5,4)
+    """
+    if isinstance(x, flint.fmpq):
+        return mpq(int(x.p), int(x.q))
+    return mpq(int(x))
 
 
 def to_float(x: Rational) -> float:

@@ -23,6 +23,8 @@ from gmpy2 import mpq
 
 from ..errors import InputError
 from ..exact.algebraic import RealAlgebraic, real_roots
+from ..exact.scalars import from_fmpq as _from_fmpq
+from ..exact.scalars import to_fmpq as _fmpq
 from ..exact.scalars import to_rational
 
 _MPQ = type(mpq(0))
@@ -32,15 +34,6 @@ _MPQ = type(mpq(0))
 def q(x) -> _MPQ:
     """Any exact number -> mpq (through the package's single entry point)."""
     return x if isinstance(x, _MPQ) else to_rational(x)
-
-
-def _fmpq(x) -> flint.fmpq:
-    x = q(x)
-    return flint.fmpq(int(x.numerator), int(x.denominator))
-
-
-def _from_fmpq(x) -> _MPQ:
-    return mpq(int(x.p), int(x.q))
 
 
 def matrix(rows) -> flint.fmpq_mat:
