@@ -32,12 +32,12 @@ from ..errors import InputError
 from ..exact import bernstein as bz
 import flint
 
-from ..exact.algebraic import integer_poly, real_roots_bernstein
+from ..exact.algebraic import integer_poly
 from ..exact.scalars import rational_str
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from .core import compose
-from .splines import rational_between
+from .splines import _line_roots, rational_between
 
 __all__ = ["FFDPiece", "PartialFFD", "ffd_keep_outside"]
 
@@ -86,16 +86,11 @@ def _exact_text(t):
 def _crossings(local: BezierCurve) -> list:
     """Parameters in (0, 1) where the local curve meets ``u = 0, 1`` or ``v = 0, 1`` (sorted, distinct)."""
     hom = local.homogeneous()
-    X, Y, W = hom[:, 0], hom[:, 1], hom[:, 2]
     found = []
-    for poly in (X, W - X, Y, W - Y):
-        if all(c == 0 for c in poly):
-            continue  # the curve runs along this boundary line: no crossing
-        for root, _mult in real_roots_bernstein(poly, 0, 1):
-            if root != 0 and root != 1 and not any(root == r for r in found):
-                found.append(root)
-    found.sort()
-    return [r.lo if r.lo == r.hi else r for r in found]
+    for axis in (0, 1):
+        for line in (mpq(0), mpq(1)):
+            found += [r for r in _line_roots(hom, axis, line) if not any(r == f for f in found)]
+    return sorted(found)
 
 
 def _inside(local: BezierCurve, t: mpq) -> bool:

@@ -69,17 +69,10 @@ def _draw_surface(ax2, ax3, name, surface, lines: int = 24) -> None:
     ax3.plot([], [], color="0.75", label=f"surface {name}")
 
 
-def _sample_any(curve, ts) -> np.ndarray:
-    """Float points of an exact Bézier curve, or of a curve over ``Q(sqrt D)``."""
-    if isinstance(curve, (BezierCurve, BSplineCurve)):
-        return sample_curve(curve, ts)
-    return np.asarray(curve.evaluate_float(ts), dtype=float)
-
-
 def _draw_exact_curves(ax3, label, curves, color=None) -> None:
     first = True
     for i, (curve, (s0, s1)) in enumerate(curves):
-        pts = _sample_any(curve, np.linspace(s0, s1, 200))
+        pts = sample_curve(curve, np.linspace(s0, s1, 200))
         c = color or f"C{i % 10}"
         ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2] if pts.shape[1] > 2 else 0 * pts[:, 0], color=c, lw=2, label=label if first else None)
         first = False
@@ -96,7 +89,7 @@ def _curves_of(result) -> list:
         if hasattr(item, "local_interval"):
             s0, s1 = item.local_interval()
             out.append((curve, (float(s0), float(s1))))
-        elif isinstance(curve, BezierCurve) or hasattr(curve, "evaluate_float"):
+        elif isinstance(curve, BezierCurve):  # curves over Q(sqrt D) are BezierCurves too
             out.append((curve, (0.0, 1.0)))
     return out
 
@@ -115,7 +108,7 @@ def _draw_intersections(ax2, name, result) -> None:
 def _draw_domain_segments(ax2, name, result) -> None:
     first = True
     for curve in result.domain_segments:
-        pts = _sample_any(curve, np.linspace(0.0, 1.0, 60))
+        pts = sample_curve(curve, np.linspace(0.0, 1.0, 60))
         ax2.plot(pts[:, 0], pts[:, 1], "--", lw=1, color="C3", label=f"{name} domain" if first else None)
         first = False
 
@@ -126,7 +119,7 @@ def _draw_error(axe, name, result, surface, curve, samples: int) -> None:
     distances, position = [], []
     segments = result.segments
     for k, segment in enumerate(segments):
-        pts = _sample_any(segment, np.linspace(0.0, 1.0, max(8, samples // max(1, len(segments)))))
+        pts = sample_curve(segment, np.linspace(0.0, 1.0, max(8, samples // max(1, len(segments)))))
         gaps = np.linalg.norm(pts[:, None, :] - exact[None, :, :], axis=2).min(axis=1)
         distances.extend(gaps)
         position.extend(k + np.linspace(0.0, 1.0, len(gaps)))

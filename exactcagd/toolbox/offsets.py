@@ -35,10 +35,13 @@ import flint
 import numpy as np
 from gmpy2 import mpq
 
+from ..algebra.numberfield import algebraic_sign
 from ..errors import DegreeError, DimensionError, DomainError, InputError, NotSupportedError
 from ..exact import bernstein as bz
-from ..exact.algebraic import RealAlgebraic, real_roots
+from ..exact.algebraic import real_roots
 from ..exact.quadratic import sqrt_rational
+from ..exact.scalars import from_fmpq as _q
+from ..exact.scalars import to_fmpq as _fq
 from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 
@@ -65,15 +68,6 @@ def _power_polys(curve: BezierCurve) -> list:
     """``[x(t), y(t)]`` as ``fmpq_poly`` (power basis, notes 3.3)."""
     a = bz.to_power(curve.points_array())
     return [flint.fmpq_poly([_fq(c) for c in a[:, k]]) for k in range(2)]
-
-
-def _q(c) -> mpq:
-    return mpq(int(c.p), int(c.q))
-
-
-def _fq(v) -> flint.fmpq:
-    v = to_rational(v)
-    return flint.fmpq(int(v.numerator), int(v.denominator))
 
 
 def _tangent(curve: BezierCurve, t) -> tuple:
@@ -275,26 +269,7 @@ def offset_cusps(curve, rho) -> list:
         raise DomainError("the radius of curvature equals |rho| everywhere (a circle of radius |rho|)")
     out = []
     for t, _mult in real_roots([_q(c) for c in equation.coeffs()], 0, 1):
-        if _sign_at(r * cross, t) < 0:
+        if algebraic_sign(t, r * cross) < 0:
             out.append(t)
     return out
 
-
-def _sign_at(p, t: RealAlgebraic) -> int:
-    """Exact sign of the polynomial ``p`` at the real algebraic number ``t``."""
-    coeffs = [_q(c) for c in p.coeffs()]
-    if len(coeffs) <= 1:
-        return (coeffs[0] > 0) - (coeffs[0] < 0) if coeffs else 0
-    while True:
-        lo, hi = t.lo, t.hi
-        if lo == hi:
-            value = sum(c * lo**k for k, c in enumerate(coeffs))
-            return (value > 0) - (value < 0)
-        if not real_roots(coeffs, lo, hi):
-            mid = (lo + hi) / 2
-            value = sum(c * mid**k for k, c in enumerate(coeffs))
-            return (value > 0) - (value < 0)
-        common = [r for r, _ in real_roots(coeffs, lo, hi) if r == t]
-        if common:
-            return 0
-        t.refine((hi - lo) / 4)
