@@ -107,3 +107,11 @@ def test_approximation_product_is_exact_with_float_companions(tmp_path):
 
     width, _ = Image.open(tmp_path / "out" / "small" / "pic.png").size
     assert width > 1500  # three panels: domain, 3-D, error
+
+
+def test_outputs_get_the_usual_file_mode(tmp_path):
+    """Atomic writes go through a private temporary file; the result must not stay 0600."""
+    from exactcagd.scenes import serialize
+
+    serialize.atomic_write_text(tmp_path / "x.json", "{}")
+    assert (tmp_path / "x.json").stat().st_mode & 0o777 == 0o666 & ~serialize._UMASK
