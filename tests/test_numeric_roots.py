@@ -232,6 +232,17 @@ def test_enclosures_hold_planted(rm, method):
             assert hit[0].certified and abs(hit[0].t - float(r)) < 1e-9
 
 
+@pytest.mark.parametrize("method", METHODS)
+def test_linear_roots_certified(method):
+    """Regression (found by CI): on a linear piece both hull clips of the two-sided march
+    are the root itself, and rounding can cross them by one ulp; marching then returned
+    the window's midpoint (0.5 for the root 1/5).  Reference: the planted root p/q."""
+    for q in range(2, 30):
+        for p in range(1, q):
+            (hit,) = bernstein_roots(planted([(mpq(p, q), 1)]), method=method)
+            assert hit.certified and hit.contains(mpq(p, q)) and abs(hit.t - p / q) < 1e-12, (p, q, hit)
+
+
 def test_bernstein_beats_power_form_on_wilkinson_roots():
     """Notes ch. 9 ([FR87]): for roots in [0, 1] the Bernstein form is better conditioned.
 

@@ -292,7 +292,14 @@ def _window_root(y: np.ndarray, tol: float, max_steps: int) -> float:
         opp_r = np.nonzero(sn * w[:-1] < sn * w[-1])[0]
         a = float(np.min((opp / n) * (w[0] / (w[0] - w[opp]))))
         b = 1.0 - float(np.min(((n - opp_r) / n) * (w[-1] / (w[-1] - w[opp_r]))))
-        if not (0.0 <= a <= b <= 1.0):
+        if b < a:
+            # exactly a <= root <= b; crossed clips are rounding (e.g. a linear piece, where
+            # both clips are the root itself): the root is pinned between them
+            a, b = b, a
+            width = b_glob - a_glob
+            a_glob, b_glob = a_glob + max(a, 0.0) * width, a_glob + min(b, 1.0) * width
+            break
+        if not (0.0 <= a and b <= 1.0):
             break
         if b - a > 0.7:  # little progress: halve instead, keeping the sign change
             a, b = (0.0, 0.5) if (_split(w, 0.5)[0][-1] > 0) != (w[0] > 0) else (0.5, 1.0)
