@@ -69,6 +69,24 @@ def test_run_writes_exact_outputs_and_reruns_from_cache(tmp_path, capsys):
     assert capsys.readouterr().out.count("cached") >= 3
 
 
+def test_readme_scene_reruns_from_cache(tmp_path, capsys):
+    """The README's main command, twice: the second run loads every product from the cache
+    (the approximation's Q(sqrt D) segments included: they once failed to unpickle) and
+    writes the same exact JSON."""
+    from pathlib import Path
+
+    scene = Path(__file__).resolve().parents[1] / "examples" / "scenes" / "hill_trim.toml"
+    out_dir = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out_dir)]) == 0
+    first = {p.name: p.read_text() for p in (out_dir / "hill_trim").glob("*.json") if p.name != "summary.json"}
+    capsys.readouterr()
+    assert main(["run", str(scene), "--out", str(out_dir)]) == 0
+    products = [r for r in json.loads((out_dir / "hill_trim" / "summary.json").read_text())["products"]]
+    assert products and all(r["status"] == "cached" for r in products), products
+    second = {p.name: p.read_text() for p in (out_dir / "hill_trim").glob("*.json") if p.name != "summary.json"}
+    assert second == first and "trim_parabola.json" in first
+
+
 def test_failing_product_writes_nothing(tmp_path):
     bad = copy.deepcopy(SCENE)
     # a trim curve leaving the surface domain makes the composition fail after the patches product ran

@@ -80,6 +80,11 @@ class FieldBezierCurve(BezierCurve):
         self._weights = a[:, -1].copy()
         self._affine = None
 
+    def __reduce__(self):
+        # pickle by the defining data: the default slot-by-slot state would include the
+        # base class's ``_points`` slot, which this class replaces by a read-only cache
+        return (type(self), (self._hom,))
+
     # ------------------------------------------------------------------ BezierCurve plumbing
     @property
     def _points(self) -> np.ndarray:

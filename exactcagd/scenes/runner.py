@@ -88,34 +88,44 @@ class Runner:
 
     # ------------------------------------------------------------------ running
     def run(self, progress=print) -> dict:
-        """Compute every product (cache first); write all outputs at the end."""
-        results, infos = {}, {}
+        """Compute every product (cache first); write all outputs at the end.
+
+        Each product is snapshotted (pickled) the moment it is computed or loaded: later
+        products may refine its exact numbers in place (an isolating interval narrowed by
+        a float conversion or a comparison), so its JSON is rendered from a copy of the
+        snapshot, and the cache stores the same snapshot. A fresh run and a cached run
+        therefore write identical exact outputs.
+        """
+        results, infos, snapshots = {}, {}, {}
         plan = self.plan()
         total = len(plan)
         for index, item in enumerate(plan, 1):
             name = item.product["name"]
             start = time.perf_counter()
             if item.cached:
-                with open(self._cache_path(item.key), "rb") as handle:
-                    result, info = pickle.load(handle)
+                snapshots[name] = self._cache_path(item.key).read_bytes()
+                result, info = pickle.loads(snapshots[name])
                 status = "cached"
             else:
                 progress(f"[{index}/{total}] {item.product['kind']:<14} {name} ...")
                 result, info = handlers.compute(item.product, self, results)
+                snapshots[name] = _snapshot(name, result, info)
                 status = "computed"
             seconds = time.perf_counter() - start
             info = dict(info, status=status, seconds=round(seconds, 3))
             results[name], infos[name] = result, info
             progress(f"[{index}/{total}] {item.product['kind']:<14} {name}: {status} in {seconds:.2f} s")
-        self._write(plan, results, infos)
+        self._write(plan, results, infos, snapshots)
         return {"results": results, "infos": infos}
 
-    def _write(self, plan, results, infos) -> None:
+    def _write(self, plan, results, infos, snapshots) -> None:
         """Write all outputs; each file atomically, cache entries after the outputs."""
         files = {}
         for item in plan:
             name = item.product["name"]
-            rendered = handlers.render(item.product, results[name], self, results)
+            blob = snapshots.get(name)
+            own = pickle.loads(blob)[0] if blob is not None else results[name]
+            rendered = handlers.render(item.product, own, self, results)
             for suffix, data in rendered.items():
                 files[self.scene_dir / f"{name}{suffix}"] = data
         summary = {
@@ -132,14 +142,18 @@ class Runner:
             atomic_write_bytes(path, data if isinstance(data, bytes) else data.encode())
         if self.use_cache:
             for item in plan:
-                if not item.cached:
-                    name = item.product["name"]
-                    try:
-                        blob = pickle.dumps((results[name], _strip(infos[name])))
-                    except (TypeError, pickle.PicklingError) as exc:
-                        print(f"note: {name} is not cached ({exc})", file=sys.stderr)
-                        continue
+                blob = snapshots.get(item.product["name"])
+                if not item.cached and blob is not None:
                     atomic_write_bytes(self._cache_path(item.key), blob)
+
+
+def _snapshot(name: str, result, info: dict) -> bytes | None:
+    """The pickled (result, info) of a product as computed, or None (reported) if it does not pickle."""
+    try:
+        return pickle.dumps((result, _strip(info)))
+    except (TypeError, AttributeError, pickle.PicklingError) as exc:
+        print(f"note: {name} is not cached ({exc})", file=sys.stderr)
+        return None
 
 
 def _strip(info: dict) -> dict:
