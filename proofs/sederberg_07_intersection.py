@@ -81,12 +81,19 @@ def order_of_contact_examples():
     assert g3 == 2 * T**4 + 2 * T**3 - T**2
     assert sympy.roots(sympy.Poly(g3, T)) == {0: 2, -sympy.Rational(1, 2) + sympy.sqrt(3) / 2: 1,
                                               -sympy.Rational(1, 2) - sympy.sqrt(3) / 2: 1}
+    # the algebra layer's order of contact (7.3.1 via 17.8): intersect() on the quarter circle
+    from exactcagd import BezierCurve
+    from exactcagd.algebra import curve_from_polynomials, intersect
+
+    quarter = BezierCurve([[1, 0], [1, 1], [0, 1]], weights=[1, 1, 2])
+    assert [r.multiplicity for r in intersect(quarter, curve_from_polynomials(1 - T**2, T + T**2))] == [2, 1]
     return erratum(
         printed="(1+t^2, t): g = t^2; (1-t^2, t+t^2): g = 4t^3+3t^4, contact order 3 (curvature continuous), other root -4/3",
         corrected="(1+t^2, t): g = t^4+3t^2 (contact order 2 as stated); (1-t^2, t+t^2): g = 2t^4+2t^3-t^2, contact "
         "order 2 (tangent, not curvature continuous), other roots (-1 +- sqrt 3)/2",
         detail="exact expansion (sympy); the exact intersection routes give multiplicity 2 at the touching point for "
-        "both curves (tests/test_numeric_intersection.py::test_notes_7_3_1_order_of_contact); the first example "
+        "both curves (tests/test_numeric_intersection.py::test_notes_7_3_1_order_of_contact; "
+        "exactcagd.algebra.intersect on the quarter circle: multiplicities 2 and 1); the first example "
         "(g = 2t^2-2t) is right")
 
 

@@ -394,24 +394,3 @@ def intersection_bezout_bound():
         h = intersection_polynomial(a, b)
         assert h.degree() <= 9
     return verified("deg f1(P2(t)) W^3 = 3 * 3 (random rational cubics)")
-
-
-# ---------------------------------------------------------------- 7.3.1 (used by intersect's multiplicities)
-@claim(DOC, "7.3.1", "order of contact examples", "g = 2t^2 - 2t (line); g = t^2 for (1 + t^2, t): contact 2; g = 4t^3 + 3t^4 for (1 - t^2, t + t^2): contact 3 and t = -4/3")
-def order_of_contact_examples():
-    circle = lambda X, Y: sp.expand(X**2 + Y**2 - 1)  # noqa: E731
-    g1 = circle(1 - t, t)
-    g2 = circle(1 + t**2, t)
-    g3 = circle(1 - t**2, t + t**2)
-    assert g1 == 2 * t**2 - 2 * t
-    assert g2 == t**4 + 3 * t**2 and sp.Poly(g2, t).monoms()[-1] == (2,)
-    assert g3 == 2 * t**4 + 2 * t**3 - t**2
-    assert set(sp.roots(g3, t)) == {0, (-1 + sp.sqrt(3)) / 2, (-1 - sp.sqrt(3)) / 2}
-    quarter = BezierCurve([[1, 0], [1, 1], [0, 1]], weights=[1, 1, 2])
-    res = intersect(quarter, curve_from_polynomials(1 - t**2, t + t**2))
-    assert [r.multiplicity for r in res] == [2, 1]
-    return erratum(
-        "g(t) = t^2 (second example); g(t) = 4t^3 + 3t^4, contact of order 3, second root -4/3 (third example)",
-        "g(t) = t^4 + 3t^2 (contact 2, as stated); g(t) = 2t^4 + 2t^3 - t^2: contact of order 2 at t = 0, other roots (-1 +- sqrt 3)/2",
-        "direct expansion of X^2 + Y^2 - W^2 (sympy); intersect() reports multiplicities 2 and 1 on the quarter circle",
-    )

@@ -84,6 +84,11 @@ class ImplicitEquation:
         return self.index == 1
 
 
+def _in_t(g) -> sympy.Expr:
+    """A flint ``fmpz_poly`` in the curve parameter, for messages (``2*t - 1``, not ``2*x + (-1)``)."""
+    return sympy.sympify(g.str(var="t"))
+
+
 def reduced_components(curve, warn: bool = True):
     """``(X, Y, W)`` with base points removed (warning), constant curves rejected."""
     X, Y, W = curve_power(curve)
@@ -91,7 +96,7 @@ def reduced_components(curve, warn: bool = True):
     check_not_constant(X, Y, W)
     if g.degree() > 0 and warn:
         warnings.warn(
-            f"the parametrization has base points (common factor {g} of X, Y, W, notes 18.3.4); "
+            f"the parametrization has base points (common factor {_in_t(g)} of X, Y, W, notes 18.3.4); "
             "it was divided out",
             BasePointWarning,
             stacklevel=3,
@@ -240,7 +245,7 @@ def implicit_equation(curve, method: str = "resultant", strict: bool = False) ->
     if strict:
         X, Y, W, g = reduced_components(curve, warn=False)
         if g.degree() > 0:
-            raise BasePointError(f"the parametrization has base points: X, Y, W share the factor {g} (notes 18.3.4)")
+            raise BasePointError(f"the parametrization has base points: X, Y, W share the factor {_in_t(g)} (notes 18.3.4)")
     else:
         X, Y, W, g = reduced_components(curve)
     n = max(p.degree() for p in (X, Y, W))
