@@ -118,6 +118,47 @@ def test_exact_method_through_public_entry():
     assert all(x.exact is not None and x.multiplicity == 1 for x in out)
 
 
+# ------------------------------------------------------------------ rounding-fragile spots (deterministic)
+DYADIC_AND_THIRDS = [mpq(1, 2), mpq(1, 4), mpq(3, 4), mpq(1, 8), mpq(5, 8), mpq(1, 1024), mpq(1, 3), mpq(1, 5)]
+
+
+@pytest.mark.parametrize("r", DYADIC_AND_THIRDS, ids=str)
+def test_degree_one_pieces_crossing_at_dyadic_parameters(r):
+    """Two segments (degree-1 pieces: both fat-line clips of 7.7 are the crossing itself,
+    the case where the root finder's clips crossed by one ulp) meeting at s = r, t = 1/2 and
+    at s = t = r.  Every method must return one certified box holding the exact crossing."""
+    a = BezierCurve([[0, 0], [1, 0]])
+    for b, t in ((BezierCurve([[r, -1], [r, 1]]), mpq(1, 2)), (BezierCurve([[r, -r], [r, 1 - r]]), r)):
+        for method in METHODS:
+            out, ref = check(a, b, method)
+            assert len(ref) == 1 and ref[0].t1 == r and ref[0].t2 == t  # the reference is right
+            assert len(out) == 1 and out[0].certified and out[0].contains(r, t), (method, str(r), out)
+
+
+ENDPOINT_CASES = {
+    "shared start points": (BezierCurve([[0, 0], [1, 2], [3, 0]]), BezierCurve([[0, 0], [1, -1], [2, 3]])),
+    "end meets start": (BezierCurve([[0, 0], [1, 2], [3, 0]]), BezierCurve([[3, 0], [4, 1], [5, -1]])),
+    "segment ends on the curve": (BezierCurve([[0, 0], [1, 2], [3, 0]]), BezierCurve([["5/4", 5], ["5/4", 1]])),
+    "segments share an end": (BezierCurve([[0, 0], [1, 1]]), BezierCurve([[1, 1], [2, 0]])),
+    "both cross at parameter 1/2": (BezierCurve([[0, 0], [1, 2], [2, 0]]), BezierCurve([[0, 2], [1, -1], [2, 2]])),
+    "line through a control vertex": (BezierCurve([[0, 0], [1, 1], [2, 0]]), BezierCurve([[1, -1], [1, 2]])),
+    "lines cross at 1/3 and 2/3": (BezierCurve([[0, 0], [3, 3]]), BezierCurve([[0, 3], [3, 0]])),
+}
+
+
+@pytest.mark.parametrize("name", ENDPOINT_CASES)
+def test_intersections_at_parameters_0_1_and_half(name):
+    """Intersections exactly at t = 0 or 1 (shared ends, T-junctions) and at the midpoint
+    where subdivision splits: none missed, all certified, both argument orders."""
+    a, b = ENDPOINT_CASES[name]
+    for c1, c2 in ((a, b), (b, a)):
+        ref = exact_intersect(c1, c2)
+        assert ref
+        for method in METHODS:
+            out, _ = check(c1, c2, method, ref)
+            assert len(out) == len(ref) and all(x.certified for x in out), (name, method, out)
+
+
 # ------------------------------------------------------------------ worked examples of chapter 7
 def test_notes_7_2_homogeneous_lines():
     """7.2: the lines through (2,3),(3,1) and (2,3),(1,4) meet at (2,3); the parallel

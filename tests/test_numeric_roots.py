@@ -243,6 +243,60 @@ def test_linear_roots_certified(method):
             assert hit.certified and hit.contains(mpq(p, q)) and abs(hit.t - p / q) < 1e-12, (p, q, hit)
 
 
+# ------------------------------------------------------------------ rounding-fragile spots (deterministic)
+NEAR_ENDS = [mpq(1, 2**53), mpq(1, 2**60), mpq(1, 2**100), mpq(1, 3 * 2**70), 1 - mpq(1, 2**53), 1 - mpq(1, 2**60), 1 - mpq(1, 2**40)]
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_dyadic_roots_certified(method):
+    """Every dyadic root p/2^k (k <= 9): the halving steps of 9.2 and the hull clips of 9.1
+    land exactly on the root.  Reference: the planted root."""
+    for k in range(1, 10):
+        for p in range(1, 2**k, 2):
+            r = mpq(p, 2**k)
+            (hit,) = bernstein_roots(planted([(r, 1)]), method=method)
+            assert hit.certified and hit.contains(r), (method, str(r), hit)
+
+
+@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize("r", NEAR_ENDS, ids=str)
+def test_roots_within_rounding_of_an_end_are_certified(method, r):
+    """A root within ~1e-16 of 0 or 1 leaves an end coefficient at the noise level: the
+    sign-variation count of 9.2 saw no change there (nothing proposed, the root only came
+    back as a wide uncertified box), and the march of 9.1 took the noisy sliver [r, 1] for a
+    second root.  Alone and next to a root at 1/2 the root must come back certified."""
+    for rm in ([(r, 1)], [(r, 1), (mpq(1, 2), 1)]):
+        found = bernstein_roots(planted(rm), method=method)
+        exact = check_enclosures(planted(rm), found)
+        assert len(found) == len(exact) == len(rm), (method, str(r), found)
+        assert all(x.certified and x.multiplicity == 1 for x in found), (method, str(r), found)
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_root_next_to_a_root_near_one(method):
+    """Regression: roots 1023/1024 and 1 - 2^-40 (marching reported 1 - 2^-40 twice, as an
+    uncertified double root; after a first fix isolate proposed both 1 - 1e-12 and 1)."""
+    rm = [(mpq(1023, 1024), 1), (1 - mpq(1, 2**40), 1)]
+    found = bernstein_roots(planted(rm), method=method)
+    check_enclosures(planted(rm), found)
+    assert len(found) == 2 and all(x.certified for x in found), found
+
+
+def test_float_methods_see_exact_and_noisy_end_roots():
+    """The raw float methods (public) on data with exact zeros at the ends; reference by hand."""
+    cases = {
+        (1.0, 0.0): [1.0],  # 1 - t
+        (0.0, 1.0, 0.0): [0.0, 1.0],  # 2t(1 - t)
+        (1.0, -1.0, 0.0): [1 / 3, 1.0],  # (1 - t)(1 - 3t)
+        (1e-300, -1.0): [1e-300 / (1 + 1e-300)],
+        (1.0, -0.5, 8.67e-19): [0.5, 1.0],  # roots 1/2 and 1 - 2^-60 (float data)
+    }
+    for y, roots in cases.items():
+        for finder in (marching_roots, isolating_roots):
+            got = [t for t, _ in finder(list(y))]
+            assert len(got) == len(roots) and all(abs(a - b) < 1e-9 for a, b in zip(got, roots)), (finder.__name__, y, got)
+
+
 def test_bernstein_beats_power_form_on_wilkinson_roots():
     """Notes ch. 9 ([FR87]): for roots in [0, 1] the Bernstein form is better conditioned.
 

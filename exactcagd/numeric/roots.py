@@ -211,9 +211,15 @@ def marching_roots(y, tol: float = 1e-12, max_steps: int = 200) -> list[tuple[fl
 
     while len(y) > 1:
         n = len(y) - 1
-        if np.all(y == 0):
-            break
         noise = err + _noise(y)
+        if np.all(np.abs(y) <= noise):
+            # the whole piece is rounding noise (e.g. the sliver [root, 1] left after a
+            # root within ~1e-12 of 1): nothing more can be decided, and taking y_0 ~ 0
+            # for another root would double the last one (certify_roots covers the rest);
+            # a march that *arrived* here (no root taken at ``left`` yet) converged to one
+            if here == 0 and steps > 0:
+                roots.append(left)
+            break
         if abs(y[0]) <= noise:
             restart(left)
             continue
@@ -247,8 +253,11 @@ def marching_roots(y, tol: float = 1e-12, max_steps: int = 200) -> list[tuple[fl
         if step * width <= tol or steps >= max_steps:
             restart(left + step * width)
             continue
-        if right[0] * s0 < 0:  # rounding sneaked past a root: take it at the old left end
-            restart(left)
+        if right[0] * s0 < 0:
+            # rounding sneaked past a root (or the step is the root, e.g. step = 1 for a
+            # root within rounding of the right end): it lies in [left, left + step]
+            window, _ = _split(y, step)
+            restart(left + _window_root(window, tol / max(step * width, 2.0**-1074), max_steps) * step * width)
             continue
         y = right
         left = left + step * width
@@ -372,8 +381,28 @@ def isolating_roots(y, tol: float = 1e-12, _err: float | None = None) -> list[tu
     out: list[tuple[float, int]] = []
     err = U * float(np.max(np.abs(y))) if _err is None else _err
     _isolate(y, 0.0, 1.0, 0, tol, out, err)
+    _end_roots(y, err, tol, out)
     out.sort()
     return out
+
+
+def _end_roots(y: np.ndarray, err: float, tol: float, out: list) -> None:
+    """Propose t = 0 / t = 1 where the end coefficient is rounding noise.
+
+    Sign variations ignore coefficients below the noise level, so a root within about
+    ``1e-15`` of an end of [0, 1] (``y_0`` or ``y_n`` tiny but not 0) shows no variation
+    and would not be proposed at all; the end itself is then the best float estimate
+    (:func:`certify_roots` proves or encloses the root next to it).  A root already
+    found within ``2^-20`` of that end explains the small coefficient; a second estimate
+    next to it would only keep the certification from separating the two.
+    """
+    if len(y) < 2:
+        return
+    noise = err + _noise(y)
+    near = max(tol, 2.0**-20)
+    for t, value in ((0.0, y[0]), (1.0, y[-1])):
+        if abs(value) <= noise and not any(abs(r - t) <= near for r, _ in out):
+            out.append((t, 1))
 
 
 def _isolate(y: np.ndarray, a: float, b: float, depth: int, tol: float, out: list, err: float) -> None:
