@@ -5,8 +5,8 @@ the parameter square, the exact image curves F(K(t)) (exact Bézier/rational Bé
 of degree N(l+m), drawn by dense evaluation) and the G1 cubic approximation of section VIII
 with its certified distance bound.  Figure 9 shows the biquintic free-form deformation.
 
-Run:  python examples/lasser_figures.py [--tol 1/200]
-Writes examples/output/lasser/figure{3..9}.png and prints the degrees and bounds.
+Run:  python examples/lasser_figures.py [--tol 1/200] [--figures 3,4,...] [--out DIR]
+Writes examples/output/lasser/figure{3..9}.png (or DIR/figure*.png) and prints the degrees and bounds.
 """
 
 from __future__ import annotations
@@ -25,29 +25,19 @@ from exactcagd import BezierCurve, BSplineCurve  # noqa: E402
 from exactcagd.composition import approximate_cubic, compose, compose_spline, ffd  # noqa: E402
 from exactcagd.composition.cubic_approx import approximate_cubic_curve  # noqa: E402
 from exactcagd.composition.paper_examples import FIGURES  # noqa: E402
+from exactcagd.numeric.evaluation import evaluate  # noqa: E402
 
 OUT = Path(__file__).resolve().parent / "output" / "lasser"
 
 
 def sample_bezier(curve: BezierCurve, lo: float = 0.0, hi: float = 1.0, k: int = 300) -> np.ndarray:
-    """Float points of an exact Bézier curve (homogeneous Bernstein evaluation)."""
-    from math import comb
-
-    hom = np.vectorize(float, otypes=[float])(curve.homogeneous())
-    n = curve.degree
-    t = np.linspace(lo, hi, k)[:, None]
-    basis = np.hstack([comb(n, i) * t**i * (1 - t) ** (n - i) for i in range(n + 1)])
-    h = basis @ hom
-    return h[:, :-1] / h[:, -1:]
+    """Float points of an exact Bézier curve on [lo, hi] (vectorized de Casteljau of the float layer)."""
+    return evaluate(curve, np.linspace(lo, hi, k), bound=False)
 
 
 def sample_surface(surface, k: int = 13):
-    grid = np.linspace(0, 1, k)
-    rows = []
-    for u in grid:
-        row = compose(surface, BezierCurve([[Fraction(u).limit_denominator(1000), 0], [Fraction(u).limit_denominator(1000), 1]]))
-        rows.append(sample_bezier(row, k=k))
-    return np.array(rows)
+    """Float wireframe rows: the exact iso-curves u = i/(k-1) (de Casteljau in u), sampled in v."""
+    return np.array([sample_bezier(surface.iso_u(Fraction(i, k - 1)), k=k) for i in range(k)])
 
 
 def domain_pieces(curve):
@@ -77,7 +67,7 @@ def approximations(surface, curve, tol):
     return [approximate_cubic_curve(compose(surface, curve), tol)]
 
 
-def draw_figure(number: int, tol) -> dict:
+def draw_figure(number: int, tol, out: Path = OUT) -> dict:
     fig_data = FIGURES[number]()
     surface = fig_data["surface"]
     fig = plt.figure(figsize=(11, 5))
@@ -112,13 +102,13 @@ def draw_figure(number: int, tol) -> dict:
     ax2.set_title("domain curves K(t) in [0,1]^2")
     ax3.set_title(f"F(K(t)) exact (colour), cubic approx. (dashed, tol {tol})", fontsize=9)
     fig.suptitle(fig_data["title"])
-    OUT.mkdir(parents=True, exist_ok=True)
-    fig.savefig(OUT / f"figure{number}.png", dpi=110)
+    out.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out / f"figure{number}.png", dpi=110)
     plt.close(fig)
     return report
 
 
-def draw_figure9(tol) -> dict:
+def draw_figure9(tol, out: Path = OUT) -> dict:
     data = FIGURES[9]()
     lattice, identity = data["surface"], data["identity"]
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 5.5))
@@ -144,22 +134,26 @@ def draw_figure9(tol) -> dict:
             right.plot(p[:, 0], p[:, 1], "k--", lw=0.8)
         report["curves"].append({"domain degree": curve.degree, "image degree": image.degree, "true degree": image.true_degree(), "cubics": len(approx.segments), "bound": float(approx.distance_bound)})
     fig.suptitle(data["title"])
-    OUT.mkdir(parents=True, exist_ok=True)
-    fig.savefig(OUT / "figure9.png", dpi=110)
+    out.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out / "figure9.png", dpi=110)
     plt.close(fig)
     return report
 
 
-def main() -> None:
+def main(argv=None) -> list:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--tol", default="1/200", help="tolerance of the cubic approximation (exact rational)")
     parser.add_argument("--figures", default="3,4,5,6,7,8,9")
-    args = parser.parse_args()
-    tol = Fraction(args.tol)
+    parser.add_argument("--out", default=str(OUT), help="directory for the PNGs")
+    args = parser.parse_args(argv)
+    tol, out = Fraction(args.tol), Path(args.out)
+    reports = []
     for number in (int(x) for x in args.figures.split(",")):
-        report = draw_figure9(tol) if number == 9 else draw_figure(number, tol)
+        report = draw_figure9(tol, out) if number == 9 else draw_figure(number, tol, out)
         print(report)
-    print(f"PNGs in {OUT}")
+        reports.append(report)
+    print(f"PNGs in {out}")
+    return reports
 
 
 if __name__ == "__main__":

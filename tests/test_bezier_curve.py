@@ -343,3 +343,24 @@ def test_bad_operation_arguments():
         c.blossom([0])
     with pytest.raises(ExactCAGDError):
         c.reparametrize(0, float("inf"))
+
+
+def test_reduce_refuses_a_zero_bernstein_weight_but_true_degree_answers():
+    """x = 2t, y = 2t^2 over W = (1-t)^2 + t^2 (Bernstein weights 1, 0, 1), times the common
+    factor (1 + t): a degree-3 curve with positive weights whose reduced form cannot be stored."""
+    t = sp.Symbol("t")
+    W, X, Y = (1 - t) ** 2 + t**2, 2 * t, 2 * t**2  # X, Y: homogeneous numerators (x W, y W)
+    g = 1 + t
+    # Bernstein coefficients of degree 3 from the power form, by sympy (independent of exactcagd)
+    def bern3(p):
+        coeffs = sp.Poly(sp.expand(p), t).all_coeffs()[::-1] + [0] * 4
+        return [sum(sp.Rational(sp.binomial(i, k), sp.binomial(3, k)) * coeffs[k] for k in range(i + 1)) for i in range(4)]
+
+    hx, hy, hw = bern3(X * g), bern3(Y * g), bern3(W * g)
+    assert all(w > 0 for w in hw)
+    curve = BezierCurve([[x / w, y / w] for x, y, w in zip(hx, hy, hw)], weights=hw)
+    ref = sp.Matrix([sp.cancel(X / W), sp.cancel(Y / W)])
+    assert sp.simplify(curve.to_sympy(t) - ref) == sp.zeros(2, 1)
+    assert curve.true_degree() == 2
+    with pytest.raises(WeightError, match="true degree 2.*Bernstein weight 1 is exactly 0"):
+        curve.reduce()

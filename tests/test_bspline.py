@@ -367,3 +367,31 @@ def test_bad_surfaces():
         s.insert_knot_v(1)
     with pytest.raises(KnotError):
         s.insert_knot_u(1)  # already multiplicity 1 = p
+
+
+def test_knot_insertion_count_must_be_a_non_negative_integer():
+    c = BSplineCurve(GOOD_PTS, [0, 0, 0, 1, 2, 2, 2])
+    for times in (-1, "1/2", 1.5, True, None):
+        with pytest.raises(InputError, match="times must be a non-negative integer"):
+            c.insert_knot("1/2", times)
+    assert c.insert_knot("1/2", 0).knots == c.knots  # zero insertions: unchanged
+    s = BSplineSurface([[[i, j, 0] for j in range(3)] for i in range(3)], [0, 0, 1, 2, 2], [0, 0, 0, 1, 1, 1])
+    with pytest.raises(InputError, match="times"):
+        s.insert_knot_v("1/2", -2)
+
+
+def test_knot_messages_name_the_vector_and_the_degree():
+    """Errors say which knot vector (knots / knots_u / knots_v) and what it was checked for."""
+    with pytest.raises(KnotError, match="knots: expected a sequence"):
+        BSplineCurve(GOOD_PTS, None)
+    with pytest.raises(KnotError, match="knots: expected a sequence"):
+        BSplineCurve(GOOD_PTS, "0 0 0 1 2 2 2")
+    with pytest.raises(KnotError, match=r"knots \(5 knots, 4 control points, degree 0\)"):
+        BSplineCurve(GOOD_PTS, [0, 0, 1, 2, 2])  # degree 0 inferred from the count
+    net = [[[i, j, 0] for j in range(3)] for i in range(3)]
+    with pytest.raises(KnotError, match=r"knots_v .*decreases at index 3"):
+        BSplineSurface(net, [0, 0, 1, 2, 2], [0, 0, 0, 1, "1/2", 1])
+    with pytest.raises(KnotError, match="knots_u: 3 knots are too few"):
+        BSplineSurface(net, [0, 0, 1], [0, 0, 0, 1, 1, 1])
+    with pytest.raises(InexactInputError, match=r"knots_v\[3\]"):
+        BSplineSurface(net, [0, 0, 1, 2, 2], [0, 0, 0, float("inf"), 1, 1])

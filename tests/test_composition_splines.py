@@ -15,7 +15,7 @@ import sympy
 from exactcagd import BezierCurve, BezierSurface, BSplineCurve, BSplineSurface
 from exactcagd.composition import compose_spline, crossed_patches
 from exactcagd.composition.splines import rational_between
-from exactcagd.errors import DimensionError, DomainError, NotSupportedError
+from exactcagd.errors import DimensionError, DomainError, InputError
 from exactcagd.exact.algebraic import RealAlgebraic
 
 
@@ -175,6 +175,20 @@ def test_bad_input():
         compose_spline(surface, BezierCurve([[0, 0], [Fr(3, 2), Fr(1, 2)]]))
     with pytest.raises(DimensionError):
         compose_spline(surface, BezierCurve([[0, 0, 0], [1, 1, 1]]))
+    # only the second Bézier segment of the spline leaves [0, 1]^2 (u(t) > 1 near t = 3/4): the message names it
+    leaving = BSplineCurve([[Fr(1, 10), Fr(1, 10)], [Fr(1, 2), Fr(1, 5)], [Fr(1, 2), Fr(1, 2)], [Fr(19, 10), Fr(1, 2)], [Fr(9, 10), Fr(9, 10)]], [0, 0, 0, Fr(1, 2), Fr(1, 2), 1, 1, 1])
+    with pytest.raises(DomainError, match=r"segment 1, t in \[1/2, 1\].*u\(t\) > 1"):
+        compose_spline(surface, leaving)
+    with pytest.raises(DomainError):
+        crossed_patches(surface, leaving)
+    result = compose_spline(surface, _curve())
+    for t in (-1, Fr(3, 2)):
+        with pytest.raises(DomainError, match="outside the curve's domain"):
+            result.evaluate(t)
+    with pytest.raises(InputError):
+        compose_spline(surface, [[0, 0], [1, 1]])
+    with pytest.raises(InputError):
+        compose_spline(_curve(), _curve())
 
 
 @pytest.mark.parametrize("rational", [False, True])

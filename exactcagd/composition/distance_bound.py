@@ -41,7 +41,7 @@ from gmpy2 import isqrt, mpq
 
 from ..errors import InputError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import to_rational_array
+from ..exact.scalars import from_fmpq, to_rational_array
 from ..geometry.bezier_curve import BezierCurve
 from .fast import _fmpq, compose_homogeneous_fast, scaled, unscaled
 
@@ -103,7 +103,7 @@ def bernstein_on(power: flint.fmpq_poly, n: int, a, b) -> list:
     q = power(flint.fmpq_poly([_fmpq(a), _fmpq(b - a)]))
     hat = _reverse(_reverse(q, n)(flint.fmpq_poly([1, 1])), n).coeffs()
     hat = hat + [flint.fmpq(0)] * (n + 1 - len(hat))
-    return [mpq(int(c.p), int(c.q)) / bz.binomial(n, i) for i, c in enumerate(hat)]
+    return [from_fmpq(c) / bz.binomial(n, i) for i, c in enumerate(hat)]
 
 
 def _squared_error(F: BezierCurve, cubic: BezierCurve, phi):

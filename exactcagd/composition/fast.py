@@ -36,7 +36,9 @@ import flint
 import numpy as np
 from gmpy2 import mpq
 
+from ..errors import InputError
 from ..exact import bernstein as bz
+from ..exact.scalars import from_fmpq
 from ..exact.scalars import to_fmpq as _fmpq
 
 __all__ = ["compose_homogeneous_fast", "scaled", "unscaled"]
@@ -56,7 +58,7 @@ def unscaled(p: flint.fmpq_poly, n: int) -> list:
     out = []
     for i in range(n + 1):
         q = coeffs[i] if i < len(coeffs) else None
-        out.append(mpq(0) if q is None else mpq(int(q.p), int(q.q)) / bz.binomial(n, i))
+        out.append(mpq(0) if q is None else from_fmpq(q) / bz.binomial(n, i))
     return out
 
 
@@ -128,6 +130,4 @@ def compose_homogeneous_fast(net: np.ndarray, curve: np.ndarray, strategy: str =
         return _flint_route(net, curve)
     if strategy == "bernstein":
         return _bernstein_route(net, curve)
-    from ..errors import InputError
-
     raise InputError(f"unknown strategy {strategy!r}; expected 'flint' or 'bernstein'")

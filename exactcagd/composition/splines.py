@@ -49,11 +49,11 @@ import flint
 import numpy as np
 from gmpy2 import mpq
 
-from ..errors import DimensionError, InputError, WeightError
+from ..errors import DimensionError, DomainError, InputError, WeightError
 from ..exact import bernstein as bz
 from ..exact import knots as kn
 from ..exact.algebraic import RealAlgebraic, integer_poly, real_roots_bernstein
-from ..exact.scalars import rational_str, to_rational
+from ..exact.scalars import from_fmpq, rational_str, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve, BSplineSurface
@@ -106,7 +106,7 @@ def affine_algebraic(r, offset, scale):
         return offset + scale * _as_mpq(r)
     p = flint.fmpq_poly([flint.fmpq(int(c)) for c in r.poly.coeffs()])
     q = p(flint.fmpq_poly([-_fmpq(offset / scale), _fmpq(1 / scale)]))
-    coeffs = [mpq(int(c.p), int(c.q)) for c in q.coeffs()]
+    coeffs = [from_fmpq(c) for c in q.coeffs()]
     return RealAlgebraic(integer_poly(coeffs), offset + scale * r.lo, offset + scale * r.hi)
 
 
@@ -222,7 +222,7 @@ class SplineComposition:
         for piece in self.pieces:
             if piece.contains(t):
                 return piece.evaluate(t)
-        raise InputError(f"parameter {t} outside the curve's domain {self.domain}")
+        raise DomainError(f"parameter {t} outside the curve's domain [{self.domain[0]}, {self.domain[1]}]")
 
     def to_dict(self) -> dict:
         return {

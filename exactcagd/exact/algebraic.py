@@ -26,7 +26,7 @@ import flint
 from gmpy2 import mpq
 
 from ..errors import InputError
-from .scalars import rational_str, to_rational
+from .scalars import rational_str, to_fmpq, to_rational
 
 __all__ = ["RealAlgebraic", "real_roots", "real_roots_bernstein", "integer_poly"]
 
@@ -40,7 +40,7 @@ def _mpq_from_arf(x) -> mpq:
 def integer_poly(coeffs) -> flint.fmpz_poly:
     """Primitive integer polynomial with the roots of ``sum coeffs[k] t^k`` (rational coeffs)."""
     qs = [to_rational(c, where=f"coefficient {k}") for k, c in enumerate(coeffs)]
-    poly = flint.fmpq_poly([flint.fmpq(int(q.numerator), int(q.denominator)) for q in qs])
+    poly = flint.fmpq_poly([to_fmpq(q) for q in qs])
     if poly == 0:
         raise InputError("the zero polynomial has every number as a root")
     num = poly.numer()
@@ -52,7 +52,7 @@ def integer_poly(coeffs) -> flint.fmpz_poly:
 
 
 def _sign_at(poly: flint.fmpz_poly, x: mpq) -> int:
-    value = poly(flint.fmpq(int(x.numerator), int(x.denominator)))
+    value = poly(to_fmpq(x))
     return (value > 0) - (value < 0)
 
 

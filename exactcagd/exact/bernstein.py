@@ -25,7 +25,7 @@ import numpy as np
 from gmpy2 import bincoef, mpq, mpz
 
 from ..errors import DegreeError, InputError
-from .scalars import to_rational, to_rational_array
+from .scalars import from_fmpq, to_fmpq, to_rational, to_rational_array
 
 __all__ = [
     "as_coefficients",
@@ -156,6 +156,7 @@ def _zeros_to_mpq(a: np.ndarray) -> np.ndarray:
 
 
 _MPZ = type(mpz(0))
+_MPQ = type(mpq(0))
 
 
 def to_power(c: np.ndarray) -> np.ndarray:
@@ -281,15 +282,11 @@ def _convolve_scalar(a: list, b: list) -> list:
 def _convolve_flint(a: list, b: list) -> list:
     import flint
 
-    def to_fmpq(x):
-        if not isinstance(x, type(mpq(0))):
-            raise TypeError("non-rational entry")
-        return flint.fmpq(int(x.numerator), int(x.denominator))
-
+    if not all(isinstance(x, _MPQ) for x in a) or not all(isinstance(x, _MPQ) for x in b):
+        raise TypeError("non-rational entry")
     pa = flint.fmpq_poly([to_fmpq(x) for x in a])
     pb = flint.fmpq_poly([to_fmpq(x) for x in b])
-    coeffs = (pa * pb).coeffs()
-    result = [mpq(int(q.p), int(q.q)) for q in coeffs]
+    result = [from_fmpq(q) for q in (pa * pb).coeffs()]
     return result + [mpq(0)] * (len(a) + len(b) - 1 - len(result))
 
 

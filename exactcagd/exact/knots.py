@@ -18,7 +18,7 @@ import bisect
 
 import numpy as np
 
-from ..errors import DomainError, KnotError
+from ..errors import DomainError, InputError, KnotError
 from .scalars import to_rational
 
 __all__ = [
@@ -36,34 +36,34 @@ __all__ = [
 ]
 
 
-def check_knots(knots, n_points: int, degree: int, clamped: bool = True) -> tuple:
+def check_knots(knots, n_points: int, degree: int, clamped: bool = True, what: str = "knots") -> tuple:
     """Validate a knot vector; return it as a tuple of ``mpq``.
 
     Raises :class:`KnotError` for a wrong length, a decreasing vector, an empty
     domain, interior multiplicity above ``degree``, or (``clamped=True``) end
-    multiplicities other than ``degree + 1``.
+    multiplicities other than ``degree + 1``.  Every message starts with ``what``
+    (e.g. ``"knots_v"``) and states the degree and point count it was checked for.
     """
     if degree < 0:
-        raise KnotError(f"degree must be >= 0, got {degree}")
-    ks = tuple(to_rational(k, where=f"knots[{i}]") for i, k in enumerate(knots))
+        raise KnotError(f"{what}: degree must be >= 0, got {degree}")
+    ks = tuple(to_rational(k, where=f"{what}[{i}]") for i, k in enumerate(knots))
+    ctx = f"{what} ({len(ks)} knots, {n_points} control points, degree {degree})"
     expected = n_points + degree + 1
     if len(ks) != expected:
-        raise KnotError(
-            f"knot vector has {len(ks)} knots; {n_points} control points of degree {degree} need {expected}"
-        )
+        raise KnotError(f"{ctx}: {n_points} control points of degree {degree} need {expected} knots")
     for i in range(len(ks) - 1):
         if ks[i] > ks[i + 1]:
-            raise KnotError(f"knot vector decreases at index {i}: {ks[i]} > {ks[i + 1]}")
+            raise KnotError(f"{ctx}: the knot vector decreases at index {i}: {ks[i]} > {ks[i + 1]}")
     if ks[degree] == ks[-degree - 1]:
-        raise KnotError("knot vector has an empty parameter domain")
+        raise KnotError(f"{ctx}: empty parameter domain [{ks[degree]}, {ks[-degree - 1]}]")
     if clamped:
         if len(set(ks[: degree + 1])) != 1 or len(set(ks[-degree - 1 :])) != 1:
-            raise KnotError(f"knot vector is not clamped: the first and last {degree + 1} knots must be equal")
+            raise KnotError(f"{ctx}: not clamped: the first and last {degree + 1} knots must be equal")
         if ks[degree + 1] == ks[0] or ks[-degree - 2] == ks[-1]:
-            raise KnotError(f"end knots have multiplicity above degree + 1 = {degree + 1}")
+            raise KnotError(f"{ctx}: an end knot has multiplicity above degree + 1 = {degree + 1}")
     for value in set(ks[degree + 1 : len(ks) - degree - 1]):
         if multiplicity(ks, value) > degree and value not in (ks[0], ks[-1]):
-            raise KnotError(f"interior knot {value} has multiplicity above the degree {degree}")
+            raise KnotError(f"{ctx}: interior knot {value} has multiplicity above the degree {degree}")
     return ks
 
 
@@ -118,8 +118,11 @@ def insert_knot(points: np.ndarray, knots: tuple, degree: int, t, times: int = 1
 
     Returns the new control array and knot vector; the spline is unchanged.
     Raises :class:`KnotError` if the multiplicity would exceed ``degree``
-    (``degree + 1`` at the domain ends is already full).
+    (``degree + 1`` at the domain ends is already full), :class:`InputError` if
+    ``times`` is not a non-negative integer (``times = 0`` returns the input).
     """
+    if isinstance(times, bool) or not isinstance(times, (int, np.integer)) or times < 0:
+        raise InputError(f"knot insertion: times must be a non-negative integer, got {times!r}")
     t = to_rational(t, where="inserted knot")
     p = degree
     lo, hi = domain(knots, p)

@@ -21,7 +21,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DomainError, InputError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import rational_str, to_rational, to_sympy
+from ..exact.scalars import from_fmpq, rational_str, to_fmpq, to_rational, to_sympy
 from ._validate import dehomogenize, homogeneous, point_array, unit_parameter, weight_array
 
 __all__ = ["BezierCurve"]
@@ -224,7 +224,9 @@ class BezierCurve:
 
         A rational curve whose reduced weight function is constant comes back as a
         polynomial curve.  The reduced weights are positive as a function on [0, 1];
-        their Bernstein coefficients are what the exact division gives.
+        their Bernstein coefficients are what the exact division gives.  If one of them
+        is exactly 0 (possible: ``(1-t)^2 + t^2`` has Bernstein weights ``1, 0, 1``),
+        :class:`WeightError` is raised; :meth:`true_degree` still gives the degree.
         """
         if self._weights is None:
             return BezierCurve._trusted(bz.reduce_degree(self._points), None)
@@ -235,13 +237,20 @@ class BezierCurve:
         w_poly = comps[-1]
         if _poly_degree(w_poly) == 0:
             return BezierCurve._trusted(hom[:, :-1] / hom[0, -1], None)
+        zeros = [k for k, w in enumerate(hom[:, -1]) if w == 0]
+        if zeros:
+            raise WeightError(
+                f"the curve has true degree {d}, but in that degree its Bernstein weight {zeros[0]} is exactly 0 "
+                "(a control point at infinity), which a BezierCurve cannot store; true_degree() still "
+                f"reports {d}; keep the stored degree-{self.degree} form"
+            )
         return BezierCurve.from_homogeneous(hom)
 
     def _reduced_homogeneous_power(self) -> list:
         import flint
 
         power = bz.to_power(self.homogeneous())
-        comps = [flint.fmpq_poly([flint.fmpq(int(x.numerator), int(x.denominator)) for x in power[:, j]]) for j in range(power.shape[1])]
+        comps = [flint.fmpq_poly([to_fmpq(x) for x in power[:, j]]) for j in range(power.shape[1])]
         g = comps[0]
         for p in comps[1:]:
             g = g.gcd(p)
@@ -320,15 +329,11 @@ def _coeff(p, k: int):
     coeffs = p.coeffs()
     if k >= len(coeffs):
         return mpq(0)
-    q = coeffs[k]
-    return mpq(int(q.p), int(q.q))
+    return from_fmpq(coeffs[k])
 
 
 def _eval_fmpq(p, x) -> object:
-    import flint
-
-    value = p(flint.fmpq(x))
-    return mpq(int(value.p), int(value.q))
+    return from_fmpq(p(to_fmpq(x)))
 
 
 def _check_dimension(curve: BezierCurve, d: int, what: str) -> None:

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import KnotError
 from ..exact import knots as kn
 from ..exact.scalars import rational_str, to_rational
 from ._validate import dehomogenize, homogeneous, point_array, weight_array
@@ -29,15 +29,22 @@ from .bezier_surface import BezierSurface
 __all__ = ["BSplineCurve", "BSplineSurface"]
 
 
-def _degree_from(n_points: int, knots, degree) -> int:
+def _knot_list(knots, what: str) -> list:
+    """The user's knot vector as a list (a flat sequence of numbers is required)."""
+    if isinstance(knots, (str, bytes)) or not hasattr(knots, "__iter__"):
+        raise KnotError(f"{what}: expected a sequence of knots, got {type(knots).__name__}")
+    return list(knots)
+
+
+def _degree_from(n_points: int, knots: list, degree, what: str = "knots") -> int:
     inferred = len(knots) - n_points - 1
     if degree is not None and degree != inferred:
-        raise InputError(
-            f"degree {degree} does not match {n_points} control points and {len(knots)} knots "
+        raise KnotError(
+            f"{what}: degree {degree} does not match {n_points} control points and {len(knots)} knots "
             f"(which give degree {inferred})"
         )
     if inferred < 0:
-        raise InputError(f"{len(knots)} knots are too few for {n_points} control points")
+        raise KnotError(f"{what}: {len(knots)} knots are too few for {n_points} control points (need at least {n_points + 1})")
     return inferred
 
 
@@ -69,8 +76,9 @@ class BSplineCurve:
 
     def __init__(self, control_points, knots, weights=None, degree: int | None = None):
         points = point_array(control_points, 1, "control_points")
-        p = _degree_from(points.shape[0], list(knots), degree)
-        self._knots = kn.check_knots(knots, points.shape[0], p)
+        knots = _knot_list(knots, "knots")
+        p = _degree_from(points.shape[0], knots, degree)
+        self._knots = kn.check_knots(knots, points.shape[0], p, what="knots")
         self._degree = p
         self._points = points
         self._weights = weight_array(weights, (points.shape[0],), "weights")
@@ -184,10 +192,11 @@ class BSplineSurface:
 
     def __init__(self, control_net, knots_u, knots_v, weights=None):
         net = point_array(control_net, 2, "control_net")
-        self._p = _degree_from(net.shape[0], list(knots_u), None)
-        self._q = _degree_from(net.shape[1], list(knots_v), None)
-        self._knots_u = kn.check_knots(knots_u, net.shape[0], self._p)
-        self._knots_v = kn.check_knots(knots_v, net.shape[1], self._q)
+        knots_u, knots_v = _knot_list(knots_u, "knots_u"), _knot_list(knots_v, "knots_v")
+        self._p = _degree_from(net.shape[0], knots_u, None, "knots_u")
+        self._q = _degree_from(net.shape[1], knots_v, None, "knots_v")
+        self._knots_u = kn.check_knots(knots_u, net.shape[0], self._p, what="knots_u")
+        self._knots_v = kn.check_knots(knots_v, net.shape[1], self._q, what="knots_v")
         self._net = net
         self._weights = weight_array(weights, net.shape[:2], "weights")
 
