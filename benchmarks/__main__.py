@@ -68,8 +68,9 @@ RUNS_HEADERS = ["module", "mode", "finished", "status", "seconds", "peak RSS of 
 
 
 def write_runs(rows: list, quick: bool) -> None:
-    """Update ``results/RUNS.md``: this run's rows replace earlier rows of the same modules."""
-    path = RESULTS / "RUNS.md"
+    """Update ``RUNS.md`` of the mode's results folder (``results/`` quick, ``results/full/`` full):
+    this run's rows replace earlier rows of the same modules."""
+    path = (RESULTS if quick else RESULTS / "full") / "RUNS.md"
     keep = {}
     if path.exists():
         for line in path.read_text().splitlines():
@@ -77,7 +78,7 @@ def write_runs(rows: list, quick: bool) -> None:
             if len(cells) == len(RUNS_HEADERS) and cells[0].startswith(("bench_", "stress_")):
                 keep[cells[0]] = cells
     keep.update({row[0]: row for row in rows})
-    RESULTS.mkdir(parents=True, exist_ok=True)
+    path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(
         f"# Benchmark runs\n\nMachine: {machine()}\n\nLast run: {'quick' if quick else 'full'} mode, "
         f"{len(rows)} module(s).\n\n" + markdown_table(RUNS_HEADERS, [keep[k] for k in sorted(keep)]) + "\n"

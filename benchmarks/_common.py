@@ -21,6 +21,27 @@ RESULTS = Path(__file__).resolve().parent / "results"
 #: Set by the runner (``python -m benchmarks``): modules whose ``main()`` reads the mode
 #: with :func:`parse_quick` get the runner's mode instead of parsing ``sys.argv``.
 RUNNER_QUICK: bool | None = None
+#: The mode :func:`parse_quick` read from the command line (a module run on its own).
+_PARSED_QUICK: bool | None = None
+
+
+def is_quick() -> bool:
+    """The mode of the benchmark running now: the runner's, else the command line's, else full."""
+    if RUNNER_QUICK is not None:
+        return RUNNER_QUICK
+    return bool(_PARSED_QUICK)
+
+
+def results_dir(quick: bool | None = None) -> Path:
+    """Where a run's tables and plots go: ``results/`` for quick runs, ``results/full/`` for full runs.
+
+    The one-command quick run (``python -m benchmarks --quick``) regenerates every file in
+    ``results/`` together; full runs take hours and keep their own folder, so neither mode
+    ever replaces the other's tables.
+    """
+    path = RESULTS if (is_quick() if quick is None else quick) else RESULTS / "full"
+    path.mkdir(parents=True, exist_ok=True)
+    return path
 
 
 @dataclass
@@ -122,25 +143,27 @@ def markdown_table(headers: list[str], rows: list[list]) -> str:
 
 
 def write_result(topic: str, title: str, body: str) -> Path:
-    """Write ``results/<topic>.md`` with a title, the machine line and the body."""
-    RESULTS.mkdir(parents=True, exist_ok=True)
-    path = RESULTS / f"{topic}.md"
+    """Write ``<topic>.md`` under :func:`results_dir` with a title, the machine line and the body."""
+    path = results_dir() / f"{topic}.md"
     stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     path.write_text(f"# {title}\n\nRun {stamp} on: {machine()}\n\n{body}\n")
     return path
 
 
 def parse_quick(description: str) -> bool:
+    """The runner's mode, or ``--quick`` from the command line (remembered for :func:`results_dir`)."""
+    global _PARSED_QUICK
     if RUNNER_QUICK is not None:
         return RUNNER_QUICK
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--quick", action="store_true", help="smaller sizes (minutes, not hours)")
-    return parser.parse_args().quick
+    _PARSED_QUICK = parser.parse_args().quick
+    return _PARSED_QUICK
 
 
 def loglog_plot(filename: str, series: dict, xlabel: str, ylabel: str, title: str, *, lines: bool = True,
                 floor: float = 1e-18) -> Path:
-    """Log-log plot of ``{label: [(x, y), ...]}`` into ``results/<filename>`` (values <= 0 drawn at ``floor``)."""
+    """Log-log plot of ``{label: [(x, y), ...]}`` into :func:`results_dir` (values <= 0 drawn at ``floor``)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -161,8 +184,7 @@ def loglog_plot(filename: str, series: dict, xlabel: str, ylabel: str, title: st
     ax.grid(True, which="major", alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
-    RESULTS.mkdir(parents=True, exist_ok=True)
-    path = RESULTS / filename
+    path = results_dir() / filename
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path

@@ -29,7 +29,7 @@
 5. A scaling plot, time against n (log scale): ``results/algebra_scaling.png``.
 
 Run:  python benchmarks/bench_algebra.py [--quick]
-Writes benchmarks/results/algebra.md.
+Writes benchmarks/results/algebra.md (quick) or results/full/algebra.md (full).
 """
 
 from __future__ import annotations
@@ -48,7 +48,7 @@ import sympy
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from benchmarks._common import Timing, markdown_table, measure, parse_quick, write_result  # noqa: E402
+from benchmarks._common import Timing, markdown_table, measure, parse_quick, results_dir, write_result  # noqa: E402
 from exactcagd import BezierCurve  # noqa: E402
 from exactcagd.algebra import implicitize  # noqa: E402
 from exactcagd.algebra.implicitize import implicit_bezier, implicit_resultant, reduced_components  # noqa: E402
@@ -411,8 +411,7 @@ def scaling_plot(raw, tools, peers):
     ax.grid(True, which="major", alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
-    path = Path(__file__).resolve().parent / "results" / "algebra_scaling.png"
-    path.parent.mkdir(parents=True, exist_ok=True)
+    path = results_dir() / "algebra_scaling.png"
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path

@@ -25,7 +25,7 @@ import time
 from gmpy2 import mpq
 
 from benchmarks._budget import run_with_budget as _timed
-from benchmarks._common import RESULTS, markdown_table, measure, parse_quick, write_result
+from benchmarks._common import markdown_table, measure, parse_quick, results_dir, write_result
 from exactcagd.curves_on_surfaces import approximate
 from exactcagd.curves_on_surfaces.samples import analytic_surface, closed_domain_curve
 from exactcagd.exact.quadratic import QuadraticNumber
@@ -77,7 +77,7 @@ def plots(data: dict) -> list[str]:
     ax.set_title("curves on surfaces: work vs precision")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    wp = RESULTS / "curves_on_surfaces_work_precision.png"
+    wp = results_dir() / "curves_on_surfaces_work_precision.png"
     fig.savefig(wp, dpi=100)
     plt.close(fig)
 
@@ -95,7 +95,7 @@ def plots(data: dict) -> list[str]:
     a1.legend(fontsize=8)
     fig.suptitle("scaling with the tolerance (angle tolerance 1 deg for the baselines)")
     fig.tight_layout()
-    sc = RESULTS / "curves_on_surfaces_scaling.png"
+    sc = results_dir() / "curves_on_surfaces_scaling.png"
     fig.savefig(sc, dpi=100)
     plt.close(fig)
     return [wp.name, sc.name]
@@ -134,7 +134,6 @@ def bench_field(quick: bool) -> str:
 def main(quick: bool = False) -> None:
     start = time.perf_counter()
     table, data = bench_methods(quick)
-    RESULTS.mkdir(parents=True, exist_ok=True)
     pictures = plots(data)
     body = (
         ("quick mode: parabola at 3 tolerances, hyperbola at 2, polyline at 1\n\n" if quick else "")

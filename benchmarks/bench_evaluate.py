@@ -24,7 +24,7 @@ from fractions import Fraction
 import numpy as np
 from gmpy2 import mpq
 
-from benchmarks._common import RESULTS, markdown_table, measure, parse_quick, write_result
+from benchmarks._common import markdown_table, measure, parse_quick, results_dir, write_result
 from exactcagd import BezierCurve
 from exactcagd.numeric.evaluation import METHODS, evaluate
 
@@ -157,8 +157,7 @@ def _plot(points) -> None:
     ax.set_title("Bezier curve evaluation: work vs precision")
     ax.legend(fontsize=7, ncol=2, loc="lower left")
     fig.tight_layout()
-    RESULTS.mkdir(parents=True, exist_ok=True)
-    fig.savefig(RESULTS / "evaluate_work_precision.png", dpi=110)
+    fig.savefig(results_dir() / "evaluate_work_precision.png", dpi=110)
     plt.close(fig)
 
 

@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 from gmpy2 import mpq
 
-from benchmarks._common import RESULTS, markdown_table, measure, optional_peer, parse_quick, ratio, write_result
+from benchmarks._common import markdown_table, measure, optional_peer, parse_quick, ratio, results_dir, write_result
 from exactcagd import BezierCurve, BezierSurface
 from exactcagd.numeric.evaluation import METHODS, evaluate, evaluate_surface
 
@@ -341,8 +341,7 @@ def plot_work_precision(plot: dict) -> None:
     axes[0].set_ylabel("max |error| vs exact value")
     fig.suptitle("Bezier evaluation: work vs precision (solid: polynomial, dashed: rational)")
     fig.tight_layout()
-    RESULTS.mkdir(parents=True, exist_ok=True)
-    fig.savefig(RESULTS / "peers_evaluate_work_precision.png", dpi=110)
+    fig.savefig(results_dir() / "peers_evaluate_work_precision.png", dpi=110)
     plt.close(fig)
 
 

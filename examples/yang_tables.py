@@ -32,7 +32,7 @@ Usage::
 ``--budget S`` stops a single run after S seconds (recorded as "> S s", default 90 / 45 quick).
 Writes ``examples/output/yang/tables.md``, ``results.json`` and one PNG per result (model,
 method, eps_D) to ``examples/output/yang/`` (git-ignored), and the committed copy of the tables,
-with the paper's printed figures next to ours, to ``benchmarks/results/yang_tables.md`` (full runs only).
+with the paper's printed figures next to ours, to ``benchmarks/results/full/yang_tables.md`` (full runs only).
 """
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ sys.path.insert(0, str(ROOT))
 from benchmarks._budget import run_with_budget as timed_run  # noqa: E402
 from benchmarks._common import machine  # noqa: E402
 OUT = ROOT / "examples" / "output" / "yang"
-COMMITTED = ROOT / "benchmarks" / "results" / "yang_tables.md"
+COMMITTED = ROOT / "benchmarks" / "results" / "full" / "yang_tables.md"
 METHODS = ("polyline", "hyperbola", "parabola")
 TOLERANCES = ("1e-1", "1e-2", "1e-3", "1e-4", "1e-5")
 PAPER_T1 = {"polyline": [443, 448, 459, 700, 2118], "hyperbola": [63, 69, 70, 110, 230], "parabola": [43, 44, 59, 77, 131]}
@@ -235,7 +235,7 @@ def main(argv=None) -> None:
     parser.add_argument("--quick", action="store_true", help="face and venus, eps_D in {1e-1, 1e-3}")
     parser.add_argument("--budget", type=float, default=None, help="seconds allowed per single run")
     parser.add_argument("--no-pictures", action="store_true")
-    parser.add_argument("--no-commit-copy", action="store_true", help="do not rewrite benchmarks/results/yang_tables.md")
+    parser.add_argument("--no-commit-copy", action="store_true", help="do not rewrite benchmarks/results/full/yang_tables.md")
     args = parser.parse_args(argv)
     OUT.mkdir(parents=True, exist_ok=True)
     names = ("face", "venus") if args.quick else ("face", "venus", "roof")

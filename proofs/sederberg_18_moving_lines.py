@@ -406,4 +406,4 @@ def quartic_moving_line_implicit():
 
 @claim(DOC, "18.4.6", "speed", "the moving-line method is generally faster than the n x n Bezout determinant")
 def moving_line_speed():
-    return not_checkable("a timing claim; measured in benchmarks/bench_algebra.py (results/algebra.md), see there for the verdict on this machine")
+    return not_checkable("a timing claim; measured in benchmarks/bench_algebra.py (results/full/algebra.md), see there for the verdict on this machine")

@@ -284,6 +284,6 @@ def tables_2_4_counts():
     return not_checkable(
         "segment counts and times depend on the unavailable face / Venus / car models and on the authors' C++ code; "
         "examples/yang_tables.py recomputes the tables on stand-ins (17 x 17, 145 x 55, 12 x 10 bicubic reliefs, closed cubic "
-        "NURBS curves with 8 and 12 control points, an open 19-piece cubic) and benchmarks/results/yang_tables.md lists our "
+        "NURBS curves with 8 and 12 control points, an open 19-piece cubic) and benchmarks/results/full/yang_tables.md lists our "
         "figures next to the printed ones (same ordering parabola < hyperbola < polyline)"
     )

@@ -25,16 +25,34 @@ def test_call_main_both_conventions():
     assert common.RUNNER_QUICK is None
 
 
-def test_write_runs_merges(tmp_path, monkeypatch):
+def test_write_runs_merges_within_a_mode(tmp_path, monkeypatch):
     import benchmarks.__main__ as runner
 
     monkeypatch.setattr(runner, "RESULTS", tmp_path)
     write_runs([["bench_a", "quick", "t", "ok", "1.0", "1 MB"], ["bench_b", "quick", "t", "ok", "2.0", "1 MB"]], True)
-    write_runs([["bench_b", "full", "t2", "FAILED: x", "3.0", "2 MB"]], False)
+    write_runs([["bench_b", "quick", "t2", "FAILED: x", "3.0", "2 MB"]], True)
     text = (tmp_path / "RUNS.md").read_text()
     assert "| bench_a | quick | t | ok | 1.0 | 1 MB |" in text
-    assert "| bench_b | full | t2 | FAILED: x | 3.0 | 2 MB |" in text
-    assert "| bench_b | quick" not in text
+    assert "| bench_b | quick | t2 | FAILED: x | 3.0 | 2 MB |" in text
+    assert "| bench_b | quick | t | ok" not in text
+    # a full run keeps its own record and leaves the quick one alone
+    write_runs([["bench_b", "full", "t3", "ok", "9.0", "3 MB"]], False)
+    assert "| bench_b | full | t3 | ok | 9.0 | 3 MB |" in (tmp_path / "full" / "RUNS.md").read_text()
+    assert (tmp_path / "RUNS.md").read_text() == text
+
+
+def test_quick_and_full_runs_never_share_result_files(tmp_path, monkeypatch):
+    """A quick run must not replace the committed full-mode tables (and vice versa)."""
+    monkeypatch.setattr(common, "RESULTS", tmp_path)
+    written = []
+    module = types.SimpleNamespace(main=lambda quick=False: written.append(common.write_result("topic", "T", f"quick={quick}")))
+    call_main(module, True)
+    call_main(module, False)
+    assert written == [tmp_path / "topic.md", tmp_path / "full" / "topic.md"]
+    assert "quick=True" in written[0].read_text() and "quick=False" in written[1].read_text()
+    monkeypatch.setattr(sys, "argv", ["bench_x", "--quick"])
+    assert common.parse_quick("x") and common.results_dir() == tmp_path
+    monkeypatch.setattr(common, "_PARSED_QUICK", None)
 
 
 def test_optional_peer_absent(monkeypatch, capsys):

@@ -129,7 +129,7 @@ def groebner_basis(polys, gens, order: str = "lex", engine: str = "auto") -> lis
         # a grevlex basis is cheap and tells the dimension: zero-dimensional ideals get
         # flint's lex Buchberger, then FGLM; positive-dimensional ones (eliminations) get
         # flint only under tight limits -- an aborted large lex run costs more than f5b
-        # (benchmarks/results/algebra.md: implicitize n = 4, 48 ms -> see the rerun)
+        # (benchmarks/results/full/algebra.md: implicitize n = 4, 48 ms -> see the rerun)
         gctx, gfl = _to_flint(exprs, gens, "grevlex")
         gres = _flint_gb(gfl, gctx)
         zero_dim = gres is not None and is_zero_dimensional([tuple(int(e) for e in p.monoms()[0]) for p in gres], len(gens))
