@@ -364,3 +364,26 @@ def test_reduce_refuses_a_zero_bernstein_weight_but_true_degree_answers():
     assert curve.true_degree() == 2
     with pytest.raises(WeightError, match="true degree 2.*Bernstein weight 1 is exactly 0"):
         curve.reduce()
+
+
+@pytest.mark.parametrize("bad", [True, False, 1.0, 2.5, -1, "2", None])
+def test_counts_must_be_integers(bad):
+    """Elevation amounts, degrees and insertion counts are non-negative integers: True (== 1)
+    and 2.0 are refused, not silently taken as numbers."""
+    from exactcagd import BezierSurface, BSplineCurve
+    from exactcagd.errors import ExactCAGDError
+
+    curve = BezierCurve([[0, 0], [1, 2], [2, 0]])
+    with pytest.raises(ExactCAGDError, match="non-negative integer"):
+        curve.elevate(bad)
+    with pytest.raises(ExactCAGDError, match="non-negative integer"):
+        BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]).elevate(1, bad)
+    if bad is not None:  # degree=None means "infer it"
+        with pytest.raises(ExactCAGDError, match="non-negative integer"):
+            BSplineCurve([[0, 0], [1, 1], [2, 0]], [0, 0, 0, 1, 1, 1], degree=bad)
+
+
+def test_counts_accept_numpy_integers():
+    import numpy as np
+
+    assert BezierCurve([[0, 0], [1, 2], [2, 0]]).elevate(np.int64(2)).degree == 4

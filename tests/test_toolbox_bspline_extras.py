@@ -350,3 +350,18 @@ def test_agrees_with_the_foundation_on_clamped_knots(case, cut):
         a, b = mine.insert_knots([t]), found.insert_knot(t)
         assert a.knots == b.knots and a.control_points == b.control_points  # Boehm = polar form
     assert [(s, pc.control_points) for s, pc in mine.to_bezier()] == [(s, pc.control_points) for s, pc in found.to_bezier()]
+
+
+def test_unclamped_knots_may_repeat_a_domain_end():
+    """Only knots strictly inside the domain [u_p, u_n] limit continuity: an unclamped vector
+    may repeat its domain start p + 1 times, but a knot inside the domain may not exceed the
+    degree.  Reference: N_{1,2} has knots (0, 0, 0, 1), i.e. (1 - t)^2 near 0, and the other
+    basis functions vanish at 0 on the domain, so the curve starts at P_1."""
+    from exactcagd.errors import KnotError
+    from exactcagd.toolbox.bspline_extras import SplineCurve
+
+    points = [[0, 0], [1, 2], [3, 2], [4, 0], [5, 1]]
+    curve = SplineCurve(points, [-1, 0, 0, 0, 1, 2, 3, 4])  # degree 2, domain [0, 2]; 0 has multiplicity 3
+    assert tuple(curve.evaluate(0)) == (1, 2)
+    with pytest.raises(KnotError, match="interior knot 1 has multiplicity 3"):
+        SplineCurve(points + [[6, 0]], [-2, -1, 0, 1, 1, 1, 3, 4, 5])  # degree 2, domain [0, 3]

@@ -19,7 +19,7 @@ import bisect
 import numpy as np
 
 from ..errors import DomainError, InputError, KnotError
-from .scalars import to_rational
+from .scalars import to_count, to_rational
 
 __all__ = [
     "check_knots",
@@ -61,9 +61,11 @@ def check_knots(knots, n_points: int, degree: int, clamped: bool = True, what: s
             raise KnotError(f"{ctx}: not clamped: the first and last {degree + 1} knots must be equal")
         if ks[degree + 1] == ks[0] or ks[-degree - 2] == ks[-1]:
             raise KnotError(f"{ctx}: an end knot has multiplicity above degree + 1 = {degree + 1}")
-    for value in set(ks[degree + 1 : len(ks) - degree - 1]):
-        if multiplicity(ks, value) > degree and value not in (ks[0], ks[-1]):
-            raise KnotError(f"{ctx}: interior knot {value} has multiplicity above the degree {degree}")
+    lo, hi = ks[degree], ks[-degree - 1]
+    for value in set(ks):
+        # only knots inside the domain limit continuity; unclamped vectors may repeat an end
+        if lo < value < hi and multiplicity(ks, value) > degree:
+            raise KnotError(f"{ctx}: interior knot {value} has multiplicity {multiplicity(ks, value)} above the degree {degree}")
     return ks
 
 
@@ -121,8 +123,7 @@ def insert_knot(points: np.ndarray, knots: tuple, degree: int, t, times: int = 1
     (``degree + 1`` at the domain ends is already full), :class:`InputError` if
     ``times`` is not a non-negative integer (``times = 0`` returns the input).
     """
-    if isinstance(times, bool) or not isinstance(times, (int, np.integer)) or times < 0:
-        raise InputError(f"knot insertion: times must be a non-negative integer, got {times!r}")
+    times = to_count(times, where="knot insertion: times")
     t = to_rational(t, where="inserted knot")
     p = degree
     lo, hi = domain(knots, p)

@@ -47,6 +47,7 @@ __all__ = [
     "from_fmpq",
     "rational_str",
     "to_float",
+    "to_count",
 ]
 
 #: The exact scalar type used throughout the exact layer.
@@ -276,6 +277,20 @@ def _fill(out, nested, index):
             _fill(out, sub, index + (i,))
     else:
         out[index] = nested
+
+
+def to_count(x, *, where: str = "count", error: type = InputError) -> int:
+    """A non-negative integer (degree, elevation amount, multiplicity) as a Python ``int``.
+
+    ``bool`` and integral floats such as ``2.0`` are rejected like any non-integer: a count
+    given as ``True`` or ``2.0`` is almost always a mistake in the call.
+
+    >>> to_count(3, where="r")
+    3
+    """
+    if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < 0:
+        raise error(f"{where} must be a non-negative integer, got {x!r}")
+    return int(x)
 
 
 def to_fraction(x: Rational) -> Fraction:

@@ -21,7 +21,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DomainError, InputError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import from_fmpq, rational_str, to_fmpq, to_rational, to_sympy
+from ..exact.scalars import from_fmpq, rational_str, to_count, to_fmpq, to_rational, to_sympy
 from ._validate import dehomogenize, homogeneous, point_array, unit_parameter, weight_array
 
 __all__ = ["BezierCurve"]
@@ -168,9 +168,8 @@ class BezierCurve:
 
     def elevate(self, r: int = 1) -> "BezierCurve":
         """Degree elevation by ``r`` (notes 2.5); the curve is unchanged."""
-        if not isinstance(r, (int, np.integer)) or r < 0:
-            raise DegreeError(f"elevation amount must be a non-negative integer, got {r!r}")
-        return self._wrap(self._apply(bz.elevate, int(r)))
+        r = to_count(r, where="elevation amount", error=DegreeError)
+        return self._wrap(self._apply(bz.elevate, r))
 
     def reparametrize(self, a, b) -> "BezierCurve":
         """The curve restricted (or extended, or reversed) to [a, b], reparametrized to [0, 1].

@@ -22,7 +22,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DimensionError, DomainError
 from ..exact import bernstein as bz
-from ..exact.scalars import rational_str, to_rational, to_sympy
+from ..exact.scalars import rational_str, to_count, to_rational, to_sympy
 from ._validate import dehomogenize, homogeneous, point_array, unit_parameter, weight_array
 from .bezier_curve import BezierCurve
 
@@ -168,11 +168,10 @@ class BezierSurface:
 
     def elevate(self, ru: int = 1, rv: int = 0) -> "BezierSurface":
         """Degree elevation by ``ru`` in u and ``rv`` in v; the surface is unchanged."""
-        for r in (ru, rv):
-            if not isinstance(r, (int, np.integer)) or r < 0:
-                raise DegreeError(f"elevation amounts must be non-negative integers, got {r!r}")
-        array = bz.along(0, bz.elevate, self._array(), int(ru))
-        return self._wrap(bz.along(1, bz.elevate, array, int(rv)))
+        ru = to_count(ru, where="elevation amount ru", error=DegreeError)
+        rv = to_count(rv, where="elevation amount rv", error=DegreeError)
+        array = bz.along(0, bz.elevate, self._array(), ru)
+        return self._wrap(bz.along(1, bz.elevate, array, rv))
 
     def derivative_u(self) -> "BezierSurface":
         """``dF/du`` as an exact surface.

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import KnotError
 from ..exact import knots as kn
-from ..exact.scalars import rational_str, to_rational
+from ..exact.scalars import rational_str, to_count, to_rational
 from ._validate import dehomogenize, homogeneous, point_array, weight_array
 from .bezier_curve import BezierCurve
 from .bezier_surface import BezierSurface
@@ -38,6 +38,8 @@ def _knot_list(knots, what: str) -> list:
 
 def _degree_from(n_points: int, knots: list, degree, what: str = "knots") -> int:
     inferred = len(knots) - n_points - 1
+    if degree is not None:
+        degree = to_count(degree, where=f"{what}: degree", error=KnotError)
     if degree is not None and degree != inferred:
         raise KnotError(
             f"{what}: degree {degree} does not match {n_points} control points and {len(knots)} knots "

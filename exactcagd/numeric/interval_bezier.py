@@ -38,7 +38,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DimensionError, DomainError, InputError, NotSupportedError
 from ..exact import bernstein as bz
-from ..exact.scalars import rational_str, to_rational, to_rational_array
+from ..exact.scalars import rational_str, to_count, to_rational, to_rational_array
 from ..geometry.bezier_curve import BezierCurve
 from .fp_error import down, up
 from .interval import FloatInterval, Interval, as_interval
@@ -345,9 +345,8 @@ class IntervalBezierCurve:
 
     def elevate(self, r: int = 1) -> "IntervalBezierCurve":
         """Degree elevation by ``r`` (convex combinations, applied to lower and upper bounds)."""
-        if not isinstance(r, (int, np.integer)) or r < 0:
-            raise DegreeError(f"elevation amount must be a non-negative integer, got {r!r}")
-        return IntervalBezierCurve._trusted(bz.elevate(self._lo, int(r)), bz.elevate(self._hi, int(r)))
+        r = to_count(r, where="elevation amount", error=DegreeError)
+        return IntervalBezierCurve._trusted(bz.elevate(self._lo, r), bz.elevate(self._hi, r))
 
     def hodograph(self) -> "IntervalBezierCurve":
         """The interval hodograph with boxes ``n([P_{k+1}] - [P_k])`` (12.2.5).

@@ -40,6 +40,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DomainError, InputError, KnotError, NotSupportedError
 from ..exact import bernstein as bz
+from ..exact import knots as kn
 from ..exact.scalars import to_rational
 from ..geometry._validate import dehomogenize, homogeneous, point_array, weight_array
 from ..geometry.bezier_curve import BezierCurve
@@ -109,24 +110,6 @@ def segment_blossom(ctrl: np.ndarray, local_knots, args):
     return level[0]
 
 
-def _check_knots(knots, n_points: int, degree: int) -> tuple:
-    ks = tuple(to_rational(k, where=f"knots[{i}]") for i, k in enumerate(knots))
-    if degree < 0:
-        raise KnotError(f"degree must be >= 0, got {degree}")
-    if len(ks) != n_points + degree + 1:
-        raise KnotError(f"{len(ks)} knots for {n_points} control points of degree {degree}; need {n_points + degree + 1}")
-    for i in range(len(ks) - 1):
-        if ks[i] > ks[i + 1]:
-            raise KnotError(f"knot vector decreases at index {i}: {ks[i]} > {ks[i + 1]}")
-    if not ks[degree] < ks[n_points]:
-        raise KnotError(f"empty parameter domain [{ks[degree]}, {ks[n_points]}]")
-    lo, hi = ks[degree], ks[n_points]
-    for v in set(ks):
-        if lo < v < hi and ks.count(v) > degree:
-            raise KnotError(f"interior knot {v} has multiplicity {ks.count(v)} > degree {degree}")
-    return ks
-
-
 # ---------------------------------------------------------------------------- spline curve
 class SplineCurve:
     """A B-spline (or NURBS) curve on an arbitrary knot vector, exact.
@@ -156,7 +139,7 @@ class SplineCurve:
         degree = len(knots) - points.shape[0] - 1
         if degree < 0:
             raise KnotError(f"{len(knots)} knots are too few for {points.shape[0]} control points")
-        self._knots = _check_knots(knots, points.shape[0], degree)
+        self._knots = kn.check_knots(knots, points.shape[0], degree, clamped=False)
         self._degree = degree
         w = weight_array(weights, (points.shape[0],), "weights")
         self._rational = w is not None
@@ -309,7 +292,7 @@ class SplineCurve:
         p = self._degree
         ks = tuple(to_rational(k, where="new knot") for k in new_knots)
         n_new = len(ks) - p - 1
-        ks = _check_knots(ks, n_new, p)
+        ks = kn.check_knots(ks, n_new, p, clamped=False)
         lo, hi = self.domain
         if not (lo <= ks[p] and ks[n_new] <= hi):
             raise DomainError(f"new domain [{ks[p]}, {ks[n_new]}] is not inside [{lo}, {hi}]")
