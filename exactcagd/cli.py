@@ -101,17 +101,17 @@ def build_parser() -> argparse.ArgumentParser:
 
     ref = sub.add_parser("refdata", help="generate exact reference data (JSON Lines)")
     ref.add_argument("kind", choices=["compose", "implicitize", "intersect"], help="what to generate")
-    ref.add_argument("--count", type=int, default=10)
-    ref.add_argument("--seed", type=int, default=0)
+    ref.add_argument("--count", type=int, default=10, help="number of records (default 10)")
+    ref.add_argument("--seed", type=int, default=0, help="random seed: the same seed gives byte-identical output (default 0)")
     ref.add_argument("--degree", default="3", help="degree spec, e.g. 3 or 2,3,3 (N,l,m)")
     ref.add_argument("--out", default="-", help="output file (default stdout)")
-    ref.add_argument("--jobs", type=int, default=2, help="local processes")
+    ref.add_argument("--jobs", type=int, default=2, help="local worker processes (default 2)")
     ref.add_argument("--scheduler", default=None, help="Dask scheduler address (runs on a Dask cluster)")
     ref.add_argument("--dask", action="store_true", help="run on a local Dask cluster")
     ref.set_defaults(func=_lazy("exactcagd.scenes.refdata", "cmd_refdata"))
 
     bench = sub.add_parser("bench", help="run the benchmarks")
-    bench.add_argument("--quick", action="store_true")
+    bench.add_argument("--quick", action="store_true", help="smaller sizes, minutes not hours (results in benchmarks/results/; full runs in results/full/)")
     bench.add_argument("--only", default=None, help="comma-separated benchmark topics")
     bench.set_defaults(func=_lazy("exactcagd.apps.bench", "main"))
     return parser
