@@ -290,3 +290,62 @@ def test_many_parameters_is_vectorized_and_fast():
     values, radii = evaluate(curve, ts)
     assert time.perf_counter() - start < 5.0
     assert np.isfinite(radii).all() and values.shape == (200_000, 2)
+
+
+# ---------------------------------------------------------------------------- fast paths
+def test_up_nonnegative_is_nextafter():
+    from exactcagd.numeric.fp_error import up, up_nonnegative
+
+    x = np.array([0.0, -0.0, 5e-324, 2.0**-1022 - 5e-324, 2.0**-1022, 0.1, 1.0, 2.0**52, 1.7976931348623157e308])
+    with np.errstate(over="ignore"):
+        assert np.array_equal(up_nonnegative(x), np.where(x == 0, 5e-324, up(x)))
+    assert up_nonnegative(1.0) == np.nextafter(1.0, 2.0)
+    assert np.isnan(up_nonnegative(np.array([np.inf, np.nan]))).all()  # callers map these to inf
+
+
+def test_rational_extreme_weights_at_interval_ends():
+    """Certificates at 0, 1 and next to them, for weights spanning 32 orders of magnitude."""
+    ts = [0.0, 5e-324, 2.0**-60, 0.5, np.nextafter(0.5, 1.0), 1 - 2.0**-52, 1 - 2.0**-53, 1.0]
+    curve = BezierCurve([[1, -2, 3], ["1/3", 5, -7], [2, "-1/7", 0], [-4, 1, 1]],
+                        weights=[mpq(1, 10**16), 10**16, mpq(3, 10**16), 7])
+    exact = [exact_point(curve.control_points, curve.weights, q(t)) for t in ts]
+    for method in METHODS:
+        values, radii = evaluate(curve, ts, method=method)
+        # the power basis cancels catastrophically near t = 1 (inf radius there, honestly)
+        assert method == "power" or np.isfinite(radii).all()
+        check_bounds(exact, values, radii)
+
+
+def test_results_independent_of_order_chunks_threads_and_scratch():
+    """Sorted vs shuffled parameters (slice vs index paths of the Horner halves), reuse of
+    the per-thread scratch memory across curves and surfaces, and concurrent threads."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    rng = np.random.default_rng(17)
+    ts = np.concatenate([rng.random(3000), [0.0, 0.5, 1.0]])
+    order = np.argsort(ts)
+    curves = [_moderate_curve(rng, n, d=3) for n in (2, 9, 23)]
+    curves.append(BezierCurve([[1, 2], [3, -1], [0, 5]], weights=[1, "1/1000", 1000]))
+    surface = BezierSurface([[[0, 0, 0], [0, 1, 2]], [[1, 0, 1], [1, 1, -3]], [[2, 1, 0], [3, 3, 3]]])
+    reference = {(i, m): evaluate(c, ts, method=m) for i, c in enumerate(curves) for m in METHODS}
+
+    def check(i, m):
+        values, radii = evaluate(curves[i], ts[order], method=m)
+        evaluate_surface(surface, ts[::-1], ts, method=m)  # reuses the scratch memory in between
+        assert np.array_equal(values, reference[i, m][0][order])
+        assert np.array_equal(radii, reference[i, m][1][order])
+        assert np.array_equal(evaluate(curves[i], ts, method=m, bound=False), reference[i, m][0])
+
+    jobs = [key for key in reference] * 2
+    with ThreadPoolExecutor(2) as pool:
+        list(pool.map(lambda key: check(*key), jobs))
+
+
+def test_cached_float_coefficients_are_read_only():
+    import exactcagd.numeric.evaluation as module
+
+    curve = BezierCurve([[0, 1], [2, 3]])
+    evaluate(curve, [0.5])
+    for array in module._curve_coefficients(curve, "decasteljau"):
+        with pytest.raises(ValueError):
+            array[0] = 7.0

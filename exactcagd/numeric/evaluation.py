@@ -82,6 +82,7 @@ True
 from __future__ import annotations
 
 import math
+import threading
 from functools import lru_cache
 
 import numpy as np
@@ -92,7 +93,8 @@ from ..exact import bernstein as bz
 from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
-from .fp_error import ETA, MIN_NORMAL, down, gamma_over, round_nearest, round_up, to_float_array, up
+from .fp_error import ETA, MIN_NORMAL, down, gamma_over, round_nearest, round_up, to_float_array
+from .fp_error import up_nonnegative as up
 
 __all__ = ["evaluate", "evaluate_surface", "METHODS"]
 
@@ -101,20 +103,80 @@ METHODS = ("decasteljau", "horner", "power")
 #: upper bound of u / (1 - u), the relative rounding error of one correctly rounded quotient
 _U_QUOTIENT = round_up(mpq(1, 2**53) / (1 - mpq(1, 2**53)))
 #: parameters per chunk are chosen so that the work arrays hold about this many floats
-#: (cache-sized; at least ``_MIN_CHUNK`` parameters so numpy's inner loops stay long)
-_CHUNK_FLOATS = 1 << 17
+#: (2 MB: large enough that numpy's per-call overhead is small -- measured faster than
+#: L2-sized chunks --, at least ``_MIN_CHUNK`` parameters so the inner loops stay long)
+_CHUNK_FLOATS = 1 << 18
 _MIN_CHUNK = 512
 
 
 # ---------------------------------------------------------------------------- methods
 # Layout: coefficient arrays have the Bernstein index on axis 0 and the parameter axis
 # LAST (length 1 when the coefficients do not depend on the parameter), so numpy's inner
-# loops run along the parameters; ``t`` is the 1-d array of parameters.
+# loops run along the parameters; ``t`` is the 1-d array of parameters.  For curves the
+# coefficients ``c`` and ``|c|`` are also stacked as a *pair* of shape ``(n+1, 2, D, 1)``:
+# one pass of a method over the pair yields the values (row 0) and the sum ``S^`` of the
+# error bound (row 1), every float operation the same as in two separate passes.
 
 
-def _select(c: np.ndarray, mask: np.ndarray) -> np.ndarray:
-    """The coefficients belonging to the parameters in ``mask`` (all of them if shared)."""
-    return c if c.shape[-1] == 1 else c[..., mask]
+class _Scratch(threading.local):
+    """Per-thread working memory, kept between calls."""
+
+    buffer = np.empty(0)
+
+
+_SCRATCH = _Scratch()
+#: largest working memory (floats) kept per thread; larger requests are allocated afresh
+_SCRATCH_LIMIT = 1 << 20
+
+
+def _scratch(*shapes: tuple[int, ...]) -> list[np.ndarray]:
+    """Uninitialized float64 arrays of the given shapes, in memory reused across calls.
+
+    Allocating and first touching megabytes of fresh memory for every chunk costs page
+    faults that can exceed the arithmetic of de Casteljau's algorithm itself.  The arrays
+    are views of one per-thread buffer: they are valid until the next call of this
+    function in the same thread, so no caller may return them.
+    """
+    sizes = [math.prod(shape) for shape in shapes]
+    total = sum(sizes)
+    if total > _SCRATCH_LIMIT:
+        buffer = np.empty(total)
+    else:
+        buffer = _SCRATCH.buffer
+        if buffer.size < total:
+            buffer = _SCRATCH.buffer = np.empty(total)
+    offsets = np.cumsum([0] + sizes)
+    return [buffer[offsets[i] : offsets[i + 1]].reshape(shape) for i, shape in enumerate(shapes)]
+
+
+def _select(c: np.ndarray, index) -> np.ndarray:
+    """The coefficients belonging to the parameters ``index`` (all of them if shared)."""
+    return c if c.shape[-1] == 1 else c[..., index]
+
+
+def _index(mask: np.ndarray):
+    """Positions of ``mask``: a slice when they are contiguous, ``None`` when there are none."""
+    idx = np.flatnonzero(mask)
+    if idx.size == 0:
+        return None
+    if idx[-1] - idx[0] + 1 == idx.size:
+        return slice(int(idx[0]), int(idx[-1]) + 1)
+    return idx
+
+
+def _store(out: np.ndarray, index, rows: np.ndarray) -> None:
+    """``out[index, j] = rows[j]`` for every coordinate ``j`` (``out`` is ``(P, D)``).
+
+    One 1-d assignment per coordinate: this transposes and scatters in one pass, faster
+    than ``out[index] = rows.T`` for an index array.
+    """
+    for j, row in enumerate(rows):
+        out[index, j] = row
+
+
+def _with_abs(x: np.ndarray) -> np.ndarray:
+    """``x`` and ``|x|`` stacked to shape ``(2, 1, P)``, the multiplier of a pair pass."""
+    return np.stack([x, np.abs(x)])[:, None]
 
 
 class _DeCasteljau:
@@ -141,11 +203,17 @@ class _DeCasteljau:
     def coefficients(exact: np.ndarray, axis: int) -> np.ndarray:
         return exact
 
+    @classmethod
+    def run(cls, c: np.ndarray, t: np.ndarray, absolute: bool) -> np.ndarray:
+        return cls._triangle(c, t, absolute).copy()
+
     @staticmethod
-    def run(c: np.ndarray, t: np.ndarray, absolute: bool) -> np.ndarray:
+    def _triangle(c: np.ndarray, t: np.ndarray, absolute: bool) -> np.ndarray:
+        """Like :meth:`run`, but the result lives in the scratch memory (see :func:`_scratch`)."""
         s = 1.0 - t
-        level = np.array(np.broadcast_to(np.abs(c) if absolute else c, c.shape[:-1] + t.shape))
-        buf = np.empty_like(level[1:])
+        shape = c.shape[:-1] + t.shape
+        level, buf = _scratch(shape, (shape[0] - 1,) + shape[1:])
+        np.copyto(level, np.abs(c) if absolute else c)
         for m in range(c.shape[0] - 1, 0, -1):
             # level[i] <- fl(fl(s * level[i]) + fl(t * level[i+1])), i < m
             np.multiply(level[1 : m + 1], t, out=buf[:m])
@@ -153,10 +221,30 @@ class _DeCasteljau:
             np.add(level[:m], buf[:m], out=level[:m])
         return level[0]
 
+    @classmethod
+    def curve(cls, c, c_abs, pair, t, values, radii) -> None:
+        """Store the values (and radii, unless ``None``) at ``t`` in the ``(P, D)`` outputs.
+
+        ``s, t >= 0``, so the pass over the pair ``[c, |c|]`` gives the values and ``S^``.
+        """
+        if radii is None:
+            _store(values, slice(None), cls._triangle(c, t, False))
+            return
+        n = c.shape[0] - 1
+        v, s_hat = cls._triangle(pair, t, False)
+        _store(values, slice(None), v)
+        _store(radii, slice(None), _finish(v, _radius(cls.factor(n, t), s_hat, cls.underflow(n, t, c_abs))))
+
     @staticmethod
     def count(n: int, t: np.ndarray) -> np.ndarray:
         exact_complement = (1.0 - (1.0 - t)) == t  # Sterbenz: fl(1-t) exact <=> this
         return np.where(exact_complement, 2 * n + 1, 3 * n + 1)
+
+    @staticmethod
+    def factor(n: int, t: np.ndarray) -> np.ndarray:
+        """``gamma_over(count(n, t))``, choosing between the two possible counts directly."""
+        exact_complement = (1.0 - (1.0 - t)) == t
+        return np.where(exact_complement, gamma_over(2 * n + 1), gamma_over(3 * n + 1))
 
     @staticmethod
     def underflow(n: int, t: np.ndarray, c_abs: np.ndarray) -> float:
@@ -168,7 +256,11 @@ class _DeCasteljau:
 
 
 class _HornerBernstein:
-    """Horner's rule in Bernstein form (notes 3.2), ratio ``|s| <= 1`` on both halves."""
+    """Horner's rule in Bernstein form (notes 3.2), ratio ``|s| <= 1`` on both halves.
+
+    The parameters ``t <= 1/2`` and ``t > 1/2`` are evaluated as two separate groups
+    (gathered by index), each with its fixed coefficient order.
+    """
 
     name = "horner"
 
@@ -199,6 +291,25 @@ class _HornerBernstein:
         return low, x, base
 
     @staticmethod
+    def _halves(t: np.ndarray):
+        """``(index, low)`` for the halves ``t <= 1/2`` (``low``) and ``t > 1/2`` that are not empty."""
+        low = t <= 0.5
+        for index, is_low in ((_index(low), True), (_index(~low), False)):
+            if index is not None:
+                yield index, is_low
+
+    @staticmethod
+    def _ratio(t: np.ndarray, low: bool):
+        """Ratio and base: ``t/(1-t)`` and ``1-t`` on the low half, ``(1-t)/t`` and ``t`` above."""
+        q = 1.0 - t
+        return (t / q, q) if low else (q / t, t)
+
+    @staticmethod
+    def _order(n: int, low: bool) -> range:
+        # low: sum_k c_k s^k, Horner from c_n down; high: sum_k c_k r^(n-k), from c_0 up
+        return range(n, -1, -1) if low else range(n + 1)
+
+    @staticmethod
     def _scale(base: np.ndarray, n: int) -> np.ndarray:
         scale = np.ones_like(base)
         if n >= 1:
@@ -210,42 +321,68 @@ class _HornerBernstein:
     @staticmethod
     def _horner(c: np.ndarray, x: np.ndarray, order) -> np.ndarray:
         order = list(order)
-        h = np.array(np.broadcast_to(c[order[0]], c.shape[1:-1] + x.shape))
-        for i in order[1:]:
+        if len(order) == 1:
+            return np.array(np.broadcast_to(c[order[0]], np.broadcast_shapes(c.shape[1:], x.shape)))
+        h = np.multiply(c[order[0]], x)
+        np.add(h, c[order[1]], out=h)
+        for i in order[2:]:
             np.multiply(h, x, out=h)
             np.add(h, c[i], out=h)
         return h
 
     @classmethod
     def run(cls, c: np.ndarray, t: np.ndarray, absolute: bool) -> np.ndarray:
-        low, x, base = cls._parts(t)
-        if absolute:
-            c, x, base = np.abs(c), np.abs(x), np.abs(base)
         n = c.shape[0] - 1
-        out = np.empty(c.shape[1:-1] + t.shape)
-        high = ~low
-        if low.any():  # sum_k c_k s^k, Horner from c_n down
-            out[..., low] = cls._horner(_select(c, low), x[low], range(n, -1, -1))
-        if high.any():  # sum_k c_k r^(n-k), Horner from c_0 up
-            out[..., high] = cls._horner(_select(c, high), x[high], range(0, n + 1))
-        out *= cls._scale(base, n)
+        out = np.empty(np.broadcast_shapes(c.shape[1:], t.shape))
+        for index, low in cls._halves(t):
+            x, base = cls._ratio(t[index], low)
+            ci = _select(c, index)
+            if absolute:
+                ci, x, base = np.abs(ci), np.abs(x), np.abs(base)
+            h = cls._horner(ci, x, cls._order(n, low))
+            h *= cls._scale(base, n)
+            out[..., index] = h
         return out
+
+    @classmethod
+    def curve(cls, c, c_abs, pair, t, values, radii) -> None:
+        """Store the values (and radii, unless ``None``) at ``t`` in the ``(P, D)`` outputs."""
+        n = c.shape[0] - 1
+        g = gamma_over(cls.count(n, t))
+        for index, low in cls._halves(t):
+            x, base = cls._ratio(t[index], low)
+            scale = cls._scale(base, n)  # base = max(|t|, |1-t|) > 0: |scale| = scale
+            if radii is None:
+                h = cls._horner(c, x, cls._order(n, low))
+                h *= scale
+                _store(values, index, h)
+                continue
+            h = cls._horner(pair, _with_abs(x), cls._order(n, low))
+            h *= scale
+            v, s_hat = h
+            a = cls._underflow(n, x, scale, c_abs)
+            _store(values, index, v)
+            _store(radii, index, _finish(v, _radius(g, s_hat, a)))
 
     @staticmethod
     def count(n: int, t: np.ndarray) -> int:
         return 6 * n + 1
 
-    @classmethod
-    def underflow(cls, n: int, t: np.ndarray, c_abs: np.ndarray) -> np.ndarray:
+    @staticmethod
+    def _underflow(n: int, x: np.ndarray, scale: np.ndarray, c_abs: np.ndarray) -> np.ndarray:
         # round-to-nearest here: the factor 2 in ETA = 2 * 2^-1075 absorbs these roundings
-        low, x, base = cls._parts(t)
-        scale = np.abs(cls._scale(base, n))
+        scale = np.abs(scale)
         a = ((2 * n + 2) * ETA) * np.maximum(1.0, scale)
         tiny = (x != 0) & (np.abs(x) <= MIN_NORMAL)
         if tiny.any():
             total = np.sum(c_abs, axis=0)
             a = a + np.where(tiny, total * (2 * n * ETA) * scale, 0.0)
         return a
+
+    @classmethod
+    def underflow(cls, n: int, t: np.ndarray, c_abs: np.ndarray) -> np.ndarray:
+        _, x, base = cls._parts(t)
+        return cls._underflow(n, x, cls._scale(base, n), c_abs)
 
     @staticmethod
     def spread(n: int, t: np.ndarray) -> np.ndarray:
@@ -280,6 +417,17 @@ class _PowerHorner:
             c, t = np.abs(c), np.abs(t)
         n = c.shape[0] - 1
         return _HornerBernstein._horner(c, t, range(n, -1, -1))
+
+    @classmethod
+    def curve(cls, c, c_abs, pair, t, values, radii) -> None:
+        """Store the values (and radii, unless ``None``); the pair pass runs on ``t`` and ``|t|``."""
+        if radii is None:
+            _store(values, slice(None), cls.run(c, t, False))
+            return
+        n = c.shape[0] - 1
+        v, s_hat = _HornerBernstein._horner(pair, _with_abs(t), range(n, -1, -1))
+        _store(values, slice(None), v)
+        _store(radii, slice(None), _finish(v, _radius(gamma_over(cls.count(n, t)), s_hat, cls.underflow(n, t, c_abs))))
 
     @staticmethod
     def count(n: int, t: np.ndarray) -> int:
@@ -353,11 +501,20 @@ def _one_parameter(x, where: str) -> float:
 
 
 # ---------------------------------------------------------------------------- coefficients
+def _frozen(*arrays: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The arrays made read-only: they are cached and shared between calls."""
+    for a in arrays:
+        a.flags.writeable = False
+    return arrays
+
+
 @lru_cache(maxsize=64)
-def _curve_coefficients(curve: BezierCurve, method: str) -> tuple[np.ndarray, np.ndarray]:
+def _curve_coefficients(curve: BezierCurve, method: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Float coefficients ``c``, ``|c|`` and the pair ``[c, |c|]`` (axis 1), read-only."""
     exact = curve.points_array() if not curve.is_rational else curve.homogeneous()
     c = to_float_array(_METHODS[method].coefficients(exact, 0))
-    return c, np.abs(c)
+    c_abs = np.abs(c)
+    return _frozen(c, c_abs, np.stack([c, c_abs], axis=1))
 
 
 @lru_cache(maxsize=16)
@@ -365,29 +522,17 @@ def _surface_coefficients(surface: BezierSurface, method: str) -> tuple[np.ndarr
     exact = surface.net_array() if not surface.is_rational else surface.homogeneous()
     m = _METHODS[method]
     c = to_float_array(m.coefficients(m.coefficients(exact, 0), 1))
-    return c, np.abs(c)
+    return _frozen(c, np.abs(c))
 
 
 # ---------------------------------------------------------------------------- kernels
-def _radius(k: np.ndarray, s_hat: np.ndarray, a: np.ndarray) -> np.ndarray:
-    """``gamma_k / (1 - k u) * (S^ + A) + A`` rounded upward."""
-    return up(up(gamma_over(k) * up(s_hat + a)) + a)
+def _radius(g, s_hat: np.ndarray, a) -> np.ndarray:
+    """``g (S^ + A) + A`` rounded upward, ``g = gamma_over(k)`` (``gamma_k / (1 - k u)``)."""
+    return up(up(g * up(s_hat + a)) + a)
 
 
 def _finish(values: np.ndarray, radii: np.ndarray) -> np.ndarray:
     return np.where(np.isfinite(values) & np.isfinite(radii), radii, np.inf)
-
-
-def _curve_chunk(m, c, c_abs, t, bound):
-    """Values (and radii) of shape ``(D, P)`` for coefficients ``c`` of shape ``(n+1, D)``."""
-    n = c.shape[0] - 1
-    cc, ca = c[..., None], c_abs[..., None]
-    values = m.run(cc, t, False)
-    if not bound:
-        return values, None
-    s_hat = m.run(ca, t, True)
-    a = m.underflow(n, t, ca)
-    return values, _finish(values, _radius(m.count(n, t), s_hat, a))
 
 
 def _surface_chunk(m, c, c_abs, u, v, bound):
@@ -406,7 +551,7 @@ def _surface_chunk(m, c, c_abs, u, v, bound):
     a1_max = np.max(np.broadcast_to(a1, s_rows.shape), axis=0)
     a = up(up(a1_max * m.spread(l, u)) + a2)
     k = m.count(mm, v) + m.count(l, u)
-    return values, _finish(values, _radius(k, t_hat, a))
+    return values, _finish(values, _radius(gamma_over(k), t_hat, a))
 
 
 def _project(hom: np.ndarray, rad: np.ndarray | None):
@@ -472,16 +617,13 @@ def evaluate(curve, ts, method: str = "decasteljau", bound: bool = True):
     m = _method(method)
     t = _parameters(ts, "ts")
     m.check(t, "ts")
-    c, c_abs = _curve_coefficients(curve, m.name)
+    c, c_abs, pair = (a[..., None] for a in _curve_coefficients(curve, m.name))
     dim = c.shape[1]
     values = np.empty((t.size, dim))
     radii = np.empty((t.size, dim)) if bound else None
-    for sl in _chunks(t.size, m.work(c.shape[0], dim)):
+    for sl in _chunks(t.size, m.work(c.shape[0], 2 * dim if bound else dim)):
         with np.errstate(all="ignore"):  # overflow shows up as an infinite radius
-            v, r = _curve_chunk(m, c, c_abs, t[sl], bound)
-        values[sl] = v.T
-        if bound:
-            radii[sl] = r.T
+            m.curve(c, c_abs, pair, t[sl], values[sl], radii[sl] if bound else None)
     if curve.is_rational:
         values, radii = _project(values, radii)
     return (values, radii) if bound else values

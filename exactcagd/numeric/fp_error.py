@@ -42,6 +42,7 @@ __all__ = [
     "round_down",
     "to_float_array",
     "up",
+    "up_nonnegative",
     "down",
 ]
 
@@ -131,6 +132,26 @@ def gamma_over(k) -> np.ndarray | float:
 def up(x):
     """One step towards ``+inf``: an upper bound of the exact value that rounded to ``x``."""
     return np.nextafter(x, np.inf)
+
+
+def up_nonnegative(x) -> np.ndarray:
+    """:func:`up` for non-negative floats, an order of magnitude faster than ``nextafter``.
+
+    For a finite ``x >= 0`` the next float towards ``+inf`` has the bit pattern of ``x``
+    plus one (``+0`` goes to the smallest subnormal, the largest float to ``inf``), so the
+    result equals ``up(x)``; ``-0.0`` is treated as ``+0.0``.  ``inf`` and ``nan`` give
+    ``nan`` (callers treat every non-finite bound as ``inf``).  Negative ``x`` are not
+    allowed: the result would move towards ``-inf``.
+
+    >>> import numpy as np
+    >>> bool((up_nonnegative(np.array([0.0, 1.0, 5e-324])) == up(np.array([0.0, 1.0, 5e-324]))).all())
+    True
+    """
+    y = np.array(x, dtype=np.float64)  # a fresh array (0-d for a scalar)
+    y += 0.0  # -0.0 + 0.0 == +0.0
+    bits = y.view(np.int64)
+    bits += 1
+    return y if y.ndim else y[()]
 
 
 def down(x):
