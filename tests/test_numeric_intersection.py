@@ -159,6 +159,104 @@ def test_intersections_at_parameters_0_1_and_half(name):
             assert len(out) == len(ref) and all(x.certified for x in out), (name, method, out)
 
 
+# ------------------------------------------------------------------ crossings within a float step of an end
+# The crossing parameter s0 = 1 - 2^-k (or 2^-k) differs from the end by less than the float
+# resolution of the Krawczyk box around it, so that box contains the end too; whether the
+# zero lies inside [0, 1] must be decided exactly.  The partner is a segment through the
+# exact point P(s0) with direction END_DIR, met at t0.  References: sympy, from the
+# Bernstein sums (nothing from exactcagd).
+END_CURVES = {
+    "line": ([[0, 0], [3, 1]], None),
+    "cubic": ([[0, 0], [1, 3], [2, -1], [3, 1]], None),
+    "rational quadratic": ([[0, 0], [1, 2], [2, 0]], [1, 3, 2]),
+}
+END_DIR = (4, 2)  # transversal to every curve above at both ends
+END_KS = (40, 52, 60, 80)
+
+
+def _sympy_homogeneous(points, weights, s):
+    """(N_x(s), N_y(s)), W(s) of a (rational) Bézier curve, from the Bernstein sums in sympy."""
+    n = len(points) - 1
+    w = weights or [1] * (n + 1)
+    basis = [sympy.binomial(n, i) * s**i * (1 - s) ** (n - i) for i in range(n + 1)]
+    num = [sum(sympy.Rational(p[k]) * wi * b for p, wi, b in zip(points, w, basis)) for k in range(2)]
+    return num, sum(wi * b for wi, b in zip(w, basis))
+
+
+def end_crossing(name, s0, t0):
+    """The curve ``name`` and a segment through its exact point at ``s0`` (reached at ``t0``),
+    with every intersection of the two on [0, 1]^2 from sympy: a list of ``(s, t)``."""
+    points, weights = END_CURVES[name]
+    (nx, ny), w = _sympy_homogeneous(points, weights, sympy.Rational(s0))
+    x0 = (nx / w, ny / w)
+    a = [x0[k] - t0 * END_DIR[k] for k in range(2)]
+    b = [x0[k] + (1 - t0) * END_DIR[k] for k in range(2)]
+    segment = BezierCurve([[str(a[0]), str(a[1])], [str(b[0]), str(b[1])]])
+    s = sympy.Symbol("s")
+    (nx, ny), w = _sympy_homogeneous(points, weights, s)
+    # P(s) on the segment's line: cross(END_DIR, N(s) - W(s) x0) = 0 (W > 0 on [0, 1])
+    g = sympy.Poly(sympy.expand(END_DIR[0] * (ny - w * x0[1]) - END_DIR[1] * (nx - w * x0[0])), s)
+    ref = []
+    for r in sympy.real_roots(g):
+        if 0 <= r <= 1:
+            (px, py), wr = _sympy_homogeneous(points, weights, r)
+            t = t0 + ((px / wr - x0[0]) * END_DIR[0] + (py / wr - x0[1]) * END_DIR[1]) / (END_DIR[0] ** 2 + END_DIR[1] ** 2)
+            if 0 <= t <= 1:
+                ref.append((r, sympy.simplify(t)))
+    return BezierCurve(points, weights=weights), segment, ref
+
+
+def _holds(x, s, t, swap):
+    """Exact containment for rational references, 60-digit mpmath for algebraic ones
+    (those lie far from every box end)."""
+    if swap:
+        s, t = t, s
+    if s.is_Rational and t.is_Rational:
+        return x.contains(mpq(int(s.p), int(s.q)), mpq(int(t.p), int(t.q)))
+    sv, tv = sympy.Rational(s.evalf(60)), sympy.Rational(t.evalf(60))
+    (a, b), (c, d) = x.t1_interval, x.t2_interval
+    return sympy.Rational(a) <= sv <= sympy.Rational(b) and sympy.Rational(c) <= tv <= sympy.Rational(d)
+
+
+def check_end_crossing(name, s0, t0, expect_s0):
+    """Both argument orders, every float method: each reference crossing in exactly one
+    returned box, that box certified, nothing else returned."""
+    curve, segment, ref = end_crossing(name, s0, t0)
+    on_domain = 0 <= s0 <= 1 and 0 <= t0 <= 1
+    assert any(r == (s0, t0) for r in ref) == on_domain == expect_s0  # the reference is right
+    for c1, c2, swap in ((curve, segment, False), (segment, curve, True)):
+        for method in METHODS:
+            out = intersect(c1, c2, method=method)
+            assert len(out) == len(ref), (name, str(s0), str(t0), method, swap, out)
+            for s, t in ref:
+                hits = [x for x in out if _holds(x, s, t, swap)]
+                assert len(hits) == 1 and hits[0].certified, (name, str(s), str(t), method, swap, out)
+
+
+@pytest.mark.parametrize("name", END_CURVES)
+@pytest.mark.parametrize("end", (0, 1))
+def test_crossing_within_a_float_step_of_an_end(name, end):
+    """Crossings at s = 1 - 2^-k (2^-k at 0), k = 40, 52, 60, 80, exactly at the end, and
+    at 1 + 2^-k (-2^-k) on the polynomial/rational extension, which is no intersection."""
+    toward = 1 if end == 0 else -1
+    half = sympy.Rational(1, 2)
+    check_end_crossing(name, sympy.Integer(end), half, True)
+    for k in END_KS:
+        e = sympy.Rational(1, 2**k)
+        check_end_crossing(name, end + toward * e, half, True)
+        check_end_crossing(name, end - toward * e, half, False)
+
+
+@pytest.mark.parametrize("name", END_CURVES)
+@pytest.mark.parametrize("k", (52, 80))
+def test_crossing_near_a_corner_of_the_domain(name, k):
+    """Both parameters within 2^-k of an end (s near 1, t near 0 and the like), inside or
+    just outside on either curve: the box crosses two faces of [0, 1]^2 at once."""
+    e = sympy.Rational(1, 2**k)
+    for s0, t0 in ((1 - e, e), (e, 1 - e), (1 - e, 1 - e), (1 + e, e), (1 - e, -e), (-e, 1 + e)):
+        check_end_crossing(name, s0, t0, 0 <= s0 <= 1 and 0 <= t0 <= 1)
+
+
 # ------------------------------------------------------------------ worked examples of chapter 7
 def test_notes_7_2_homogeneous_lines():
     """7.2: the lines through (2,3),(3,1) and (2,3),(1,4) meet at (2,3); the parallel
@@ -305,6 +403,20 @@ def test_rational_curves_extreme_weights():
     # weight-1000 vertex keeps many box pairs alive); they run in the slow stress tests
     out, _ = check(arc, line, "clipping", ref)
     assert out[0].certified
+
+
+def test_interval_method_separates_crossings_1e_7_apart():
+    """y = x^2 against y = 10^-14 (x = 2s - 1): crossings at s = t = (1 -+ 10^-7)/2 (exact, by
+    hand), where the curves are 2 10^-7 apart in slope.  Float evaluation noise of the
+    parabola (~1e-15) keeps a band of tol-sized piece pairs alive around each crossing;
+    the interval method must still certify both (it ran out of budget: one box of width 1)."""
+    parabola = BezierCurve([[-1, 1], [0, -1], [1, 1]])
+    line = BezierCurve([[-1, mpq(1, 10**14)], [1, mpq(1, 10**14)]])
+    roots = [(1 - mpq(1, 10**7)) / 2, (1 + mpq(1, 10**7)) / 2]
+    out = intersect(parabola, line, method="interval")
+    assert len(out) == 2 and all(x.certified for x in out), out
+    for x, r in zip(out, roots):
+        assert x.contains(r, r) and x.t1_interval[1] - x.t1_interval[0] < 1e-8, (x, r)
 
 
 def test_clipping_history_shows_fast_convergence():

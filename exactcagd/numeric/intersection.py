@@ -20,7 +20,10 @@ intersection in ``X`` (transversal: the Jacobian is regular there) and gives a t
 enclosure.  Components where this cannot succeed — tangent intersections (singular
 Jacobian), clusters closer than the float resolution — are reported with
 ``certified=False`` and ``tangent=True`` and an enclosure that still holds every
-intersection near them.  None is ever dropped without proof.
+intersection near them.  None is ever dropped without proof.  A proven zero whose
+box crosses an end of a curve (``s = 1 - 2^-60`` lies within a float step of 1) is
+placed inside or outside [0, 1]^2 by exact Krawczyk steps (rational centre and Newton
+step, outward-rounded Jacobian); one outside is no intersection and is dropped.
 
 >>> from exactcagd import BezierCurve
 >>> p = BezierCurve([[0, 0], [1, 2], [2, 0]])
@@ -44,6 +47,7 @@ from ..exact import bernstein as bz
 from ..geometry.bezier_curve import BezierCurve
 from . import enclose as iv
 from .fatline import clip_range, fat_lines
+from .interval import Interval
 
 __all__ = ["Intersection", "intersect", "METHODS"]
 
@@ -441,7 +445,13 @@ def _span_box(curve: _Curve, sp: _Span):
 
 def _interval_method(c1: _Curve, c2: _Curve, tol: float, budget):
     """Interval subdivision (notes 7.6): monotone spans, boxes from end points, halving by
-    Horner evaluation only (O(n) per step)."""
+    Horner evaluation only (O(n) per step).
+
+    Below width ``64 * _W_TANGENT`` a span's box is also met with the box of its restricted
+    control polygon: both enclose the piece, and the polygon box is much thinner where
+    the end-point enclosures are dominated by the Horner error bound (near a tangency
+    that noise kept bands of tol-sized pairs alive until the work budget ran out).
+    """
     spans = []
     for curve in (c1, c2):
         items = []
@@ -461,10 +471,12 @@ def _interval_method(c1: _Curve, c2: _Curve, tol: float, budget):
         sizes = (float(np.max(bp[1] - bp[0])), float(np.max(bq[1] - bq[0])))
         done_p = p.b - p.a <= tol or sizes[0] <= tol
         done_q = q.b - q.a <= tol or sizes[1] <= tol
-        if max(p.b - p.a, q.b - q.a) <= 64 * _W_TANGENT and not (done_p and done_q) and p.b > p.a and q.b > q.a:
+        if max(p.b - p.a, q.b - q.a) <= 64 * _W_TANGENT and p.b > p.a and q.b > q.a:
             pp = _Piece(*iv.restrict(c1.lo, c1.hi, p.a, p.b), (p.a, p.a), (p.b, p.b))
             qq = _Piece(*iv.restrict(c2.lo, c2.hi, q.a, q.b), (q.a, q.a), (q.b, q.b))
-            if _possibly_tangent(c1, pp.lo, pp.hi, c2, qq.lo, qq.hi):
+            if _disjoint(_meet(bp, _box(c1, pp)), _meet(bq, _box(c2, qq))):
+                continue
+            if not (done_p and done_q) and _possibly_tangent(c1, pp.lo, pp.hi, c2, qq.lo, qq.hi):
                 if _fat_excluded(c1, pp, c2, qq):
                     continue
                 if max(p.b - p.a, q.b - q.a) <= _W_TANGENT:
@@ -477,6 +489,11 @@ def _interval_method(c1: _Curve, c2: _Curve, tol: float, budget):
         qs = _span_halves(c2, q) if not done_q else [q]
         stack.extend((x, y) for x in ps for y in qs)
     return out
+
+
+def _meet(b1, b2):
+    """Intersection of two boxes that both enclose the same piece of curve."""
+    return np.maximum(b1[0], b2[0]), np.minimum(b1[1], b2[1])
 
 
 def _span_halves(curve: _Curve, sp: _Span):
@@ -689,14 +706,17 @@ def _certify(c1: _Curve, c2: _Curve, rects, tol: float, ends) -> list[Intersecti
                 continue
             known = [e for e in ends if _in_box(e, S2, T2)]
             s_est, t_est = _estimate(ests, S2, T2)
-            if inside or known:
+            side = "inside" if inside or known else _boundary_side(c1, c2, S2, T2)
+            if side == "outside":
+                continue  # the box's only zero lies beyond an end of a curve (proven)
+            if side == "inside":
                 exact = known[0] if known else None
                 if exact is not None:
                     S2, T2 = _exact_box(exact[0], S2), _exact_box(exact[1], T2)
                     s_est, t_est = float(exact[0]), float(exact[1])
                 out.append(_make(c1, s_est, t_est, _clamp(S2), _clamp(T2), True, False, 1, exact))
                 continue
-            # straddles the domain boundary and is no known endpoint intersection
+            # straddles the domain boundary closer than the exact side test resolves
             out.append(_make(c1, s_est, t_est, _clamp(S2), _clamp(T2), False, False, None, None))
             continue
         singular = result[1]
@@ -716,6 +736,121 @@ def _certify(c1: _Curve, c2: _Curve, rects, tol: float, ends) -> list[Intersecti
         out.append(_make(c1, s_est, t_est, _clamp(S), _clamp(T), False, True, None, known[0] if known else None))
     out.sort(key=lambda x: (x.t1, x.t2))
     return _dedupe(out)
+
+
+# =============================================================== zeros at the domain boundary
+_SIDE_STEPS = 8  # exact Krawczyk contractions per side test (each gains ~45 bits)
+
+
+def _boundary_side(c1: _Curve, c2: _Curve, S, T) -> str:
+    """Decide exactly on which side of the boundary of [0, 1]^2 the zero in ``S x T`` lies.
+
+    ``S x T`` holds exactly one zero of ``F(s, t) = P(s) - Q(t)`` (proven by the float
+    Krawczyk test) and crosses ``s = 0``, ``s = 1``, ``t = 0`` or ``t = 1``.  Float
+    arithmetic cannot place the zero relative to the face when it is closer than the
+    float resolution (``s = 1 - 2^-60``), so the box is contracted by exact Krawczyk
+    steps (:func:`_krawczyk_exact`; every zero in ``X`` lies in ``K(X) ∩ X``, each step
+    gains about as many bits as float resolves) until it lies on one side of every face.
+
+    Returns
+    -------
+    str
+        ``"inside"`` (the zero lies in [0, 1]^2), ``"outside"`` (it does not), or
+        ``"unknown"`` (too close to a face to tell in a few steps; a zero exactly on a
+        face is found by the exact endpoint test instead).
+    """
+    unit = Interval(0, 1)
+    start = (Interval(S[0], S[1]), Interval(T[0], T[1]))
+    box = start
+    for _ in range(_SIDE_STEPS):
+        if all(unit.contains(X) for X in box):
+            return "inside"
+        if any(X.intersection(unit) is None for X in box):
+            return "outside"
+        nxt = _krawczyk_exact(c1, c2, *box)
+        if nxt is None or nxt == box:
+            # (None cannot happen: the box holds the zero; stay uncommitted if it does)
+            return "unknown"
+        box = tuple(_round_out(X, Z) for X, Z in zip(nxt, start))
+    return "unknown"
+
+
+def _round_out(X: Interval, within: Interval) -> Interval:
+    """``X`` widened to dyadic end points (a 2^-12 fraction of its width), kept in ``within``.
+
+    Keeps the rationals of the exact contraction short (the exact centre of the next
+    step would otherwise double their size); widening never loses a zero, and staying
+    in ``within`` (the box proven to hold exactly one zero) keeps it the same zero.
+    """
+    width = X.width()
+    if width == 0:
+        return X
+    e = 12 + int(width.denominator).bit_length() - int(width.numerator).bit_length()
+    scale = mpq(2) ** e
+    lo = mpq(math.floor(X.lo * scale)) / scale
+    hi = mpq(math.ceil(X.hi * scale)) / scale
+    return Interval(max(lo, within.lo), min(hi, within.hi))
+
+
+def _krawczyk_exact(c1: _Curve, c2: _Curve, S: Interval, T: Interval):
+    """``K(X) ∩ X`` for ``X = S x T`` with exact rational arithmetic, ``None`` when empty.
+
+    ``K(X) = m - Y F(m) + (I - Y J(X)) (X - m)`` with the exact midpoint ``m``, the exact
+    value ``F(m)`` (rational de Casteljau on the exact control points), any rational
+    matrix ``Y`` (the float inverse of the midpoint Jacobian) and an outward-rounded
+    float enclosure ``J(X)`` of the Jacobian on a float box containing ``X``.  Only
+    ``J`` is rounded, and only outward, so ``K(X)`` contains every zero in ``X``
+    (mean value theorem).  Returns ``(S, T)`` unchanged when nothing can be computed.
+    """
+    X = (S, T)
+    m = (S.midpoint(), T.midpoint())
+    p, q = _exact_point(c1, m[0]), _exact_point(c2, m[1])
+    J = _jacobian_enclosure(c1, c2, S, T)
+    if p is None or q is None or J is None:
+        return X
+    F = [p[k] - q[k] for k in range(2)]
+    M = [[0.5 * (float(J[i][j].lo) + float(J[i][j].hi)) for j in range(2)] for i in range(2)]
+    det = M[0][0] * M[1][1] - M[0][1] * M[1][0]
+    if det == 0.0 or not math.isfinite(det):
+        return X
+    Y = [[mpq(M[1][1] / det), mpq(-M[0][1] / det)], [mpq(-M[1][0] / det), mpq(M[0][0] / det)]]
+    out = []
+    for i in range(2):
+        acc = Interval(m[i] - Y[i][0] * F[0] - Y[i][1] * F[1])
+        for j in range(2):
+            e = (1 if i == j else 0) - (J[0][j] * Y[i][0] + J[1][j] * Y[i][1])
+            acc = acc + e * (X[j] - m[j])
+        cut = acc.intersection(X[i])
+        if cut is None:
+            return None
+        out.append(cut)
+    return out[0], out[1]
+
+
+def _exact_point(curve: _Curve, s):
+    """Exact (scaled) Cartesian point of the curve at a rational ``s`` (None at a pole)."""
+    h = bz.de_casteljau(curve.exact, s)
+    if not curve.rational:
+        return h[0], h[1]
+    if h[2] == 0:
+        return None
+    return h[0] / h[2], h[1] / h[2]
+
+
+def _jacobian_enclosure(c1: _Curve, c2: _Curve, S: Interval, T: Interval):
+    """Exact intervals enclosing ``J = [P'(s), -Q'(t)]`` on ``S x T`` (None if unbounded)."""
+    dp = c1.range_derivative(*_outward(S))
+    dq = c2.range_derivative(*_outward(T))
+    values = [float(x) for pair in (dp, dq) for x in np.concatenate(pair)]
+    if not all(math.isfinite(x) for x in values):
+        return None
+    (dp_lo, dp_hi), (dq_lo, dq_hi) = dp, dq
+    return [[Interval(float(dp_lo[k]), float(dp_hi[k])), Interval(-float(dq_hi[k]), -float(dq_lo[k]))] for k in range(2)]
+
+
+def _outward(X: Interval) -> tuple[float, float]:
+    """A float box of positive width containing the rational interval ``X``."""
+    return float(iv.down(iv.enclose_scalar(X.lo)[0])), float(iv.up(iv.enclose_scalar(X.hi)[1]))
 
 
 def _split_rect(c1: _Curve, c2: _Curve, S, T, ests):
