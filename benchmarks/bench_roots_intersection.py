@@ -96,6 +96,8 @@ def root_rows(quick: bool):
             "9.1 marching (float)": lambda c=coeffs: [r.t for r in bernstein_roots(c, method="marching", certify=False)],
             "9.2 isolate (float)": lambda c=coeffs: [r.t for r in bernstein_roots(c, method="isolate", certify=False)],
             "9.2 isolate + certify": lambda c=coeffs: [r.t for r in bernstein_roots(c, method="isolate")],
+            "bernstein_roots method=exact (certified, tol 1e-12)": lambda c=coeffs: [
+                r.t for r in bernstein_roots(c, method="exact")],
             "numpy roots, power form": lambda c=coeffs: sorted(x.real for x in np.roots(_power(c)[::-1]) if abs(x.imag) < 1e-8),
             "mpmath polyroots 30 digits": lambda c=coeffs: mpmath_roots(c, 30),
             "mpmath polyroots 60 digits": lambda c=coeffs: mpmath_roots(c, 60),

@@ -30,7 +30,7 @@ from exactcagd.numeric.roots import (
 )
 
 T = sympy.Symbol("t")
-METHODS = ("marching", "isolate")
+METHODS = ("marching", "isolate", "exact")
 
 
 def flint_roots(coeffs):
@@ -87,10 +87,12 @@ def test_notes_figure_9_2_example(method):
     check_enclosures(c, found)
     ends = [r for r in found if r.interval in ((0.0, 0.0), (1.0, 1.0))]
     assert [(r.t, r.multiplicity, r.certified) for r in ends] == [(0.0, 1, True), (1.0, 1, True)]
-    simple = [r for r in found if r.certified and r.interval[0] > 0 and r.interval[1] < 1]
+    simple = [r for r in found if r.certified and r.multiplicity == 1 and r.interval[0] > 0 and r.interval[1] < 1]
     assert len(simple) == 1 and abs(simple[0].t - 0.2) < 1e-12
     double = [r for r in found if r.contains(mpq(3, 5))]
     assert len(double) == 1 and abs(double[0].t - 0.6) < 1e-6
+    if method == "exact":  # exact isolation also proves the double root
+        assert double[0].certified and double[0].multiplicity == 2
 
 
 def test_isolating_detects_double_root_multiplicity():
@@ -295,6 +297,43 @@ def test_float_methods_see_exact_and_noisy_end_roots():
         for finder in (marching_roots, isolating_roots):
             got = [t for t, _ in finder(list(y))]
             assert len(got) == len(roots) and all(abs(a - b) < 1e-9 for a, b in zip(got, roots)), (finder.__name__, y, got)
+
+
+@pytest.mark.parametrize(
+    "roots",
+    [
+        [("1/3", 3), ("1/2", 1), ("2/3", 2)],                      # multiple roots
+        [("1/2", 1), (mpq(1, 2) + mpq(1, 2**40), 1)],               # a cluster 2^-40 wide
+        [(mpq(k, 20), 1) for k in range(1, 20)],                    # Wilkinson-like, degree 19
+    ],
+)
+def test_exact_method_certifies_what_floats_cannot(roots):
+    """method="exact": every root certified with its exact multiplicity, even where the float
+    methods must leave an uncertified cluster.  Reference: sympy's exact real roots (CRootOf)
+    of the expanded Bernstein sum, counted with multiplicity, compared exactly."""
+    from collections import Counter
+
+    coeffs = planted([(mpq(r), m) for r, m in roots])
+    found = bernstein_roots(coeffs, method="exact", tol=1e-14)
+    n = len(coeffs) - 1
+    expr = sum(sympy.Rational(str(c)) * sympy.binomial(n, i) * T**i * (1 - T) ** (n - i) for i, c in enumerate(coeffs))
+    reference = Counter(r for r in sympy.Poly(sympy.expand(expr), T).real_roots() if 0 <= r <= 1)
+    assert len(found) == len(reference) and all(r.certified for r in found)
+    for root, mult in reference.items():
+        (hit,) = [r for r in found if sympy.Rational(r.interval[0]) <= root <= sympy.Rational(r.interval[1])]
+        assert hit.multiplicity == mult and hit.width <= 1e-14
+
+
+def test_exact_method_is_exact_on_irrational_roots():
+    # 8t^2 - 8t + 1 = [1, -3, 1] in Bernstein form: roots (2 -+ sqrt 2)/4; enclosures of width
+    # <= tol, widened only by the outward rounding to floats (one float step at each end)
+    for tol in (1e-6, 1e-12, 1e-15):
+        found = bernstein_roots([1, -3, 1], method="exact", tol=tol)
+        exact = [(2 - sympy.sqrt(2)) / 4, (2 + sympy.sqrt(2)) / 4]
+        assert [r.certified for r in found] == [True, True]
+        for r, e in zip(found, exact):
+            assert sympy.Rational(r.interval[0]) <= e <= sympy.Rational(r.interval[1])
+            assert r.width <= tol + 2 * math.ulp(r.t)
 
 
 def test_bernstein_beats_power_form_on_wilkinson_roots():
