@@ -16,7 +16,6 @@ from pathlib import Path
 import matplotlib.image
 import pytest
 
-from exactcagd import BSplineCurve
 from exactcagd.composition.paper_examples import FIGURES
 
 SCRIPT = Path(__file__).resolve().parents[1] / "examples" / "lasser_figures.py"
@@ -24,20 +23,17 @@ TOL = Fraction(1, 200)
 
 
 @pytest.fixture(scope="module")
-def reports(tmp_path_factory):
+def script():
     spec = importlib.util.spec_from_file_location("lasser_figures", SCRIPT)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="module")
+def reports(script, tmp_path_factory):
     out = tmp_path_factory.mktemp("lasser")
-    return out, {r["figure"]: r for r in module.main(["--out", str(out), "--tol", str(TOL)])}
-
-
-def _bezier_pieces(curve):
-    if isinstance(curve, list):
-        return [p for item in curve for p in _bezier_pieces(item)]
-    if isinstance(curve, BSplineCurve):
-        return [piece for _, piece in curve.to_bezier()]
-    return [curve]
+    return out, {r["figure"]: r for r in script.main(["--out", str(out), "--tol", str(TOL)])}
 
 
 def _expected_degree(piece, l, m):
@@ -57,7 +53,7 @@ def _non_blank_png(path: Path) -> bool:
 
 
 @pytest.mark.parametrize("number", [3, 4, 5, 6, 7, 8])
-def test_figures_3_to_8_degrees_bounds_and_png(reports, number):
+def test_figures_3_to_8_degrees_bounds_and_png(script, reports, number):
     out, by_number = reports
     report = by_number[number]
     data = FIGURES[number]()
@@ -65,7 +61,7 @@ def test_figures_3_to_8_degrees_bounds_and_png(reports, number):
     assert report["surface degree"] == (l, m)
     assert len(report["curves"]) == len(data["curves"])
     for curve, entry in zip(data["curves"], report["curves"]):
-        assert entry["image degrees"] == [_expected_degree(p, l, m) for p in _bezier_pieces(curve)]
+        assert entry["image degrees"] == [_expected_degree(p, l, m) for p in script.domain_pieces(curve)]
         for _count, bound in entry["cubics / certified bound"]:
             assert bound <= float(TOL)
     assert _non_blank_png(out / f"figure{number}.png")
