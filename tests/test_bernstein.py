@@ -9,7 +9,7 @@ from fractions import Fraction
 
 import pytest
 import sympy as sp
-from _sympy_ref import R, S, T, U, V, any_params, bernstein_sum, coeff_lists, small_rationals, unit_params
+from _sympy_ref import R, S, T, U, V, any_params, bernstein_sum, coeff_lists, point_lists, small_rationals, unit_params
 from gmpy2 import mpq
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
@@ -238,6 +238,18 @@ def test_to_power_matches_sympy_expand(coeffs):
     expected = expected + [0] * (len(coeffs) - len(expected))
     assert [R(x) for x in a] == [sp.Rational(x) for x in expected]
     assert list(bz.from_power(a)) == list(arr(coeffs))
+
+
+@given(point_lists(3, max_degree=16))
+@settings(max_examples=15, deadline=None)
+def test_to_power_of_point_columns_matches_sympy_expand(points):
+    """Each coordinate column converts separately (the flint Taylor-shift path for n > 2)."""
+    a = bz.to_power(arr(points))
+    for k in range(3):
+        column = [p[k] for p in points]
+        expected = sp.Poly(poly_of(column), T).all_coeffs()[::-1]
+        expected = expected + [0] * (len(points) - len(expected))
+        assert [R(x) for x in a[:, k]] == [sp.Rational(x) for x in expected]
 
 
 @given(coeff_lists(), st.integers(0, 3))

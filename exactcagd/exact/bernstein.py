@@ -162,14 +162,36 @@ _MPQ = type(mpq(0))
 def to_power(c: np.ndarray) -> np.ndarray:
     """Bernstein -> power basis: ``p(t) = sum_k a_k t^k`` (notes 3.3).
 
-    ``a_k = C(n,k) sum_{i<=k} (-1)^(k-i) C(k,i) c_i``.
+    ``a_k = C(n,k) sum_{i<=k} (-1)^(k-i) C(k,i) c_i``; rational columns go through
+    python-flint (:func:`_to_power_flint`), other exact entries through this sum.
     """
     n = c.shape[0] - 1
     out = np.empty_like(c)
-    for k in range(n + 1):
-        acc = sum(((-1) ** (k - i) * binomial(k, i) * c[i] for i in range(k + 1)), start=mpq(0) * c[0])
-        out[k] = binomial(n, k) * acc
+    for index in np.ndindex(*c.shape[1:]) if c.ndim > 1 else [()]:
+        column = c[(slice(None),) + index]
+        if n > 2 and all(isinstance(x, (_MPQ, _MPZ, int)) and not isinstance(x, bool) for x in column):
+            out[(slice(None),) + index] = _to_power_flint(column)
+            continue
+        for k in range(n + 1):
+            acc = sum(((-1) ** (k - i) * binomial(k, i) * column[i] for i in range(k + 1)), start=mpq(0) * column[0])
+            out[(k,) + index] = binomial(n, k) * acc
     return _zeros_to_mpq(out)
+
+
+def _to_power_flint(column) -> list:
+    """Power coefficients of one rational Bernstein column by a Taylor shift.
+
+    With ``b_i = C(n,i) c_i`` and ``R(y) = sum_i b_i y^(n-i)``,
+    ``t^-n p(t) = sum_i b_i (1/t - 1)^(n-i) = R(1/t - 1)``: so ``a_k`` is the coefficient
+    of ``x^(n-k)`` in ``R(x - 1)`` (one exact flint composition instead of ``O(n^2)``
+    Python rational operations).
+    """
+    import flint
+
+    n = len(column) - 1
+    shifted = flint.fmpq_poly([to_fmpq(column[n - j]) * binomial(n, n - j) for j in range(n + 1)])(flint.fmpq_poly([-1, 1]))
+    coeffs = shifted.coeffs()
+    return [from_fmpq(coeffs[n - k]) if n - k < len(coeffs) else mpq(0) for k in range(n + 1)]
 
 
 def from_power(a, degree: int | None = None) -> np.ndarray:
