@@ -264,11 +264,11 @@ def main(quick: bool | None = None) -> None:
     if quick:
         def methods_at(tol):
             return {"1e-1": ["parabola"], "1e-2": ["parabola", "hyperbola"], "1e-3": ["parabola"], "1e-4": ["parabola"],
-                    "1e-5": ["parabola", "hyperbola", "polyline"], "1e-6": []}[tol]
+                    "1e-5": ["parabola", "hyperbola", "polyline"], "1e-6": []}[tol] + ["fit"]
         cases = [("bicubic polynomial", False)]
     else:
         def methods_at(tol):
-            return ["parabola", "hyperbola", "polyline"]
+            return ["parabola", "hyperbola", "polyline", "fit"]
         cases = [("bicubic polynomial", False), ("bicubic rational", True)]
     rows, plot = [], {}
     for name, rational in cases:

@@ -1,6 +1,6 @@
 """Curves on surfaces: the G1 parabola approximation of Yang et al. (004) and its baselines.
 
-``approximate(surface, domain_curve, tol, method="parabola"|"hyperbola"|"polyline")``
+``approximate(surface, domain_curve, tol, method="parabola"|"hyperbola"|"polyline"|"fit")``
 returns a :class:`CurveOnSurface`:
 
 * ``.segments``: exact rational Bézier curves (``BezierCurve`` instances; those with
@@ -40,7 +40,12 @@ a cusp or corner of the domain curve -> ``DomainError`` unless ``on_corner="spli
 (then a G0 joint listed in ``.corners``); an iso-parametric piece is approximated by
 itself (exact, zero distance).
 
-Modules: :mod:`.domain` (cuts and joints), :mod:`.approximants` (Theorem 1, baselines),
+``method="fit"`` (:mod:`.fit`, fit then certify) is a different product: compact polynomial
+Bézier curves (degree <= ``max_degree``, usually one segment) *near* the surface, C0 at
+joints, fitted in binary64 to the exact image ``S(D(t))``, converted exactly to rationals,
+with a proven bound of ``max_t |S(D(t)) - C(t)|`` as ``.distance_bound`` (``<= tol``).
+
+Modules: :mod:`.domain` (cuts and joints), :mod:`.fit` (fit then certify), :mod:`.approximants` (Theorem 1, baselines),
 :mod:`.hausdorff` (certified bounds), :mod:`.surface_grid` (patches, derivative bounds),
 :mod:`.field_curve` (curves over ``Q(sqrt(D))``), :mod:`.driver` (section 2),
 :mod:`.samples` (the stand-in models of the Table 1-4 analogues).

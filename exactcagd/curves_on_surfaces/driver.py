@@ -28,7 +28,7 @@ from gmpy2 import mpq
 
 from ..errors import ExactCAGDError, InputError, NotSupportedError
 from ..exact import bernstein as bz
-from ..exact.scalars import rational_str, to_rational
+from ..exact.scalars import rational_str, to_count, to_rational
 from . import approximants as ap
 from .domain import DomainCurve, Joint, positively_parallel
 from .field_curve import _end_derivative, make_curve
@@ -37,7 +37,7 @@ from .surface_grid import SurfaceGrid
 
 __all__ = ["approximate", "CurveOnSurface", "METHODS"]
 
-METHODS = ("parabola", "hyperbola", "polyline")
+METHODS = ("parabola", "hyperbola", "polyline", "fit")
 
 #: Smallest parameter width of a piece before the algorithm gives up.
 MIN_WIDTH = mpq(1, 2**48)
@@ -348,6 +348,7 @@ def approximate(
     max_segments: int = 100000,
     verify: bool = True,
     snap_bits: int | None = 64,
+    max_degree: int = 14,
 ) -> CurveOnSurface:
     """Approximate the image of a domain curve on a surface by an exact composite curve.
 
@@ -357,7 +358,15 @@ def approximate(
     domain_curve : planar BezierCurve or BSplineCurve inside the surface's domain
     tol : positive number
         ``eps_D``: bound on the Hausdorff distance to the exact image ``S(D(t))``.
-    method : "parabola" (Yang et al. 2012, G1), "hyperbola" (ref. [15]) or "polyline" (ref. [2])
+    method : "parabola" (Yang et al. 2012, G1), "hyperbola" (ref. [15]), "polyline" (ref. [2]) or "fit"
+        The first three lie exactly on the surface.  ``"fit"`` (fit then certify,
+        :mod:`.fit`) is *not* on the surface: a least-squares polynomial fit (binary64,
+        degree 3 .. ``max_degree``, bisection when no degree suffices) to the exact image
+        ``F = S(D(t))``, converted exactly to rationals, with a proven rational bound of
+        ``max_t |F(t) - C(t)|`` (Bernstein coefficients of the exact difference, convex-hull
+        property; exact bisection when needed) as ``distance_bound``.  C0 at joints (shared
+        exact end points); ``domain_segments`` are the pieces of ``D`` each segment follows,
+        ``continuity`` is ``"C0"``.
     angle_tol : number (degrees)
         ``eps_T`` of the baselines (ignored by the parabola method, which is G1).
     root : "paper" | "other"
@@ -366,6 +375,8 @@ def approximate(
         What to do where the domain curve itself has a tangent discontinuity.
     verify : bool
         Check G1 exactly at every joint (parabola method).
+    max_degree : int
+        Highest degree of a ``"fit"`` segment (ignored by the other methods).
     snap_bits : int or None
         Joints created at irrational cuts and at shoulder points get their point
         rounded to ``2^-snap_bits`` and their direction to ``snap_bits - 24`` bits
@@ -384,6 +395,9 @@ def approximate(
     >>> r = approximate(S, D, "1/100")
     >>> r.degree, r.continuity, r.distance_bound <= mpq(1, 100)
     (3, 'G1', True)
+    >>> f = approximate(S, D, "1/100", method="fit")     # compact, within 1/100, not on S
+    >>> len(f.segments), f.continuity, f.distance_bound <= mpq(1, 100)
+    (1, 'C0', True)
     """
     start = time.perf_counter()
     tol = to_rational(tol, where="tol")
@@ -396,12 +410,19 @@ def approximate(
     if on_corner not in ("error", "split"):
         raise InputError(f"on_corner must be 'error' or 'split', got {on_corner!r}")
     angle = to_rational(angle_tol, where="angle_tol")
-    if method != "parabola" and not (0 < angle < 180):
+    if method in ("hyperbola", "polyline") and not (0 < angle < 180):
         raise InputError(f"angle tolerance must lie in (0, 180) degrees, got {angle}")
     grid = SurfaceGrid(surface)
     if grid.dimension < 2:
         raise InputError("the surface must lie in a space of dimension >= 2")
     dcurve = DomainCurve(domain_curve)
+    if method == "fit":  # C0 result: corners of D need no special joint
+        if to_count(max_degree, where="max_degree") < 1:
+            raise InputError(f"max_degree must be a positive integer, got {max_degree!r}")
+        from .fit import approximate_fit
+
+        joints = dcurve.joints(grid.u_breaks, grid.v_breaks, grid.domain, "split")
+        return approximate_fit(grid, dcurve, joints, tol, max_degree, max_segments, start)
     joints = dcurve.joints(grid.u_breaks, grid.v_breaks, grid.domain, on_corner)
     for a, b in zip(joints[:-1], joints[1:]):
         if a.hi[0] == b.lo[0] and not a.hi[1] < b.lo[1]:

@@ -1,0 +1,304 @@
+"""Fit then certify: compact polynomial curves within a certified distance of ``S(D(t))``.
+
+The route of ``approximate(..., method="fit")``.  Unlike the other methods the result
+does *not* lie on the surface; it is a C0 chain of polynomial Bézier curves ``C`` with a
+proven bound of ``max_t |F(t) - C(t)|`` to the exact image ``F = S o D``, which bounds the
+Hausdorff distance from above (every ``F(t)`` is within it of ``C(t)`` and conversely).
+
+1. **Exact image.**  The domain curve is cut at its own knots and at knot-line crossings of
+   the surface (:class:`~.domain.DomainCurve`; its monotonicity cuts are not needed here and
+   are dropped), and every piece is composed exactly with its patch
+   (:func:`exactcagd.composition.fast.compose_homogeneous_fast`, degree ``N (l + m)``).
+2. **Fit (binary64).**  Least squares of a degree-``d`` Bézier curve to ``F`` at
+   Chebyshev-Lobatto parameters (parametric correspondence ``C(t) ~ F(t)``), end points
+   interpolated; ``d = 3, 4, ...`` up to ``max_degree`` (and up to ``deg F`` for a polynomial
+   ``F``, where ``d = deg F`` reproduces ``F``), the piece is bisected when no degree works.
+3. **Exact conversion.**  The interior float control points are converted to their exact
+   binary values; the end points are the exact joint points ``S(joint)``, shared by the two
+   neighbours, so the chain is C0 *exactly*.
+4. **Certificate (exact rationals).**  For a polynomial ``F`` the Bernstein coefficients of
+   ``F - C`` (``C`` elevated to ``deg F``) bound ``|F(t) - C(t)|`` by the convex-hull
+   property; for ``F = H / W`` with ``W > 0``, ``(H - W C) / W`` is bounded by the largest
+   coefficient norm of ``H - W C`` over the smallest coefficient of ``W``.  Square roots are
+   rounded upwards.  When this bound exceeds ``tol``, the squared error is bounded by exact
+   bisection (:func:`exactcagd.composition.distance_bound.distance_bound`, which also handles
+   weights whose coefficients are not all positive).  Samples only *select* candidates; the
+   accepted bound is always one of these two proofs.
+
+Irrational knot-line crossings are carried by isolating intervals of width ``2^-64``
+(:mod:`.domain`): the tiny image arcs between two pieces are covered by the joint bound of
+the driver (``_gap_bound``), part of ``distance_bound``.
+
+>>> from exactcagd import BezierCurve
+>>> F = BezierCurve([[0, 0, 0], [1, 2, 0], [2, -1, 1], [3, 0, 0], [4, 1, 1]])
+>>> pieces = fit_curve(F.homogeneous(), "1/100")
+>>> all(bound <= mpq(1, 100) for _, _, bound in pieces)
+True
+"""
+
+from __future__ import annotations
+
+import time
+from math import comb
+
+import numpy as np
+from gmpy2 import mpq
+
+from ..composition.distance_bound import distance_bound, sqrt_upper
+from ..composition.fast import compose_homogeneous_fast
+from ..errors import ExactCAGDError, WeightError
+from ..exact import bernstein as bz
+from ..exact.scalars import to_rational
+from ..geometry.bezier_curve import BezierCurve
+from .field_curve import make_curve
+
+__all__ = ["fit_curve", "certified_bound", "approximate_fit", "sample_parameters", "MAX_DEGREE"]
+
+#: Highest degree tried before a piece is bisected (OpenCASCADE's default maximum).
+MAX_DEGREE = 14
+#: Number of Chebyshev-Lobatto fitting parameters.
+NODES = 48
+#: Smallest parameter width of a piece (relative to its domain piece) before giving up.
+MIN_WIDTH = mpq(1, 2**40)
+#: Reasons of a domain joint that separate exact images (other cuts are not needed).
+_KEEP = {"start", "end", "curve-knot", "u-knot-line", "v-knot-line"}
+
+
+# ----------------------------------------------------------------------------- float side
+def sample_parameters() -> tuple[np.ndarray, np.ndarray]:
+    """``(fit, check)``: the Chebyshev-Lobatto fitting parameters and the midpoints between them.
+
+    The sampled error at both sets only *selects* a degree; it is never the bound.
+    """
+    fit = (1.0 - np.cos(np.pi * np.arange(NODES) / (NODES - 1))) / 2
+    fit[0], fit[-1] = 0.0, 1.0
+    return fit, (fit[:-1] + fit[1:]) / 2
+
+
+def _bernstein_matrix(n: int, t: np.ndarray) -> np.ndarray:
+    t = np.asarray(t, dtype=float)[:, None]
+    i = np.arange(n + 1)[None, :]
+    coef = np.array([float(comb(n, k)) for k in range(n + 1)])[None, :]
+    return coef * t**i * (1 - t) ** (n - i)
+
+
+def _float_points(hom: np.ndarray, t: np.ndarray) -> np.ndarray:
+    h = _bernstein_matrix(hom.shape[0] - 1, t) @ hom
+    return h[:, :-1] / h[:, -1:]
+
+
+def _least_squares(basis: np.ndarray, target: np.ndarray, p0: np.ndarray, p1: np.ndarray) -> np.ndarray:
+    """Control points of the degree-``d`` fit with fixed ends (``basis``: ``(samples, d + 1)``)."""
+    if basis.shape[1] == 2:
+        return np.vstack([p0, p1])
+    rhs = target - np.outer(basis[:, 0], p0) - np.outer(basis[:, -1], p1)
+    inner, *_ = np.linalg.lstsq(basis[:, 1:-1], rhs, rcond=None)
+    return np.vstack([p0, inner, p1])
+
+
+def _exact(x: float) -> mpq:
+    """The exact binary value of a float (no rounding; independent of the float policy)."""
+    return mpq(*float(x).as_integer_ratio())
+
+
+# ----------------------------------------------------------------------------- certificate
+def _max_norm_sq(rows) -> mpq:
+    return max(sum(x * x for x in row) for row in rows)
+
+
+def _hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
+    """Convex-hull bound of ``max_t |F(t) - C(t)|`` (``None`` if a weight coefficient is <= 0)."""
+    n, d = hom.shape[0] - 1, ctrl.shape[0] - 1
+    h, w = hom[:, :-1], hom[:, -1]
+    if all(x == w[0] for x in w) and w[0] > 0:  # polynomial F
+        top = max(n, d)
+        diff = bz.elevate(h / w[0], top - n) - bz.elevate(ctrl, top - d)
+        return sqrt_upper(_max_norm_sq(diff))
+    low = min(w)
+    if low <= 0:
+        return None
+    num = bz.elevate(h, d) - bz.product(w.reshape(-1, 1), ctrl)
+    return sqrt_upper(_max_norm_sq(num)) / low
+
+
+def certified_bound(hom: np.ndarray, ctrl: np.ndarray, target=None) -> mpq:
+    """A rational ``r >= max_{t in [0, 1]} |F(t) - C(t)|``, proven in exact arithmetic.
+
+    Parameters
+    ----------
+    hom : object array ``(n + 1, k + 1)``
+        Homogeneous Bernstein coefficients ``(W F, W)`` of the exact curve.
+    ctrl : object array ``(d + 1, k)``
+        Exact (rational) control points of the polynomial curve ``C``.
+    target : rational, optional
+        When the convex-hull bound exceeds it, refine by exact bisection of the squared
+        error (:func:`~exactcagd.composition.distance_bound.distance_bound`) until the
+        bound is below ``target`` or a point above it is found.
+
+    Notes
+    -----
+    Convex-hull property of the Bernstein basis: ``|sum_i D_i B_i(t)| <= max_i |D_i|``;
+    for ``F = H / W``, ``F - C = (H - W C) / W`` and ``W(t) >= min_i W_i``.
+    """
+    bound = _hull_bound(hom, ctrl)
+    if bound is not None and (target is None or bound <= target):
+        return bound
+    refined = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), target=target)
+    return refined if bound is None else min(bound, refined)
+
+
+# ----------------------------------------------------------------------------- one piece
+def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
+    """``(ctrl, bound)`` of the lowest degree that certifies ``<= tol``, or ``None``."""
+    fl = np.vectorize(float, otypes=[float])(hom)
+    s_fit, s_check = sample_parameters()
+    target_fit, target_check = _float_points(fl, s_fit), _float_points(fl, s_check)
+    f0, f1 = np.array([float(x) for x in p0]), np.array([float(x) for x in p1])
+    n = hom.shape[0] - 1
+    polynomial = all(x == hom[0, -1] for x in hom[:, -1])
+    top = min(max_degree, n) if polynomial else max_degree
+    for d in range(max(1, min(3, top)), top + 1):
+        fctrl = _least_squares(_bernstein_matrix(d, s_fit), target_fit, f0, f1)
+        err = max(np.linalg.norm(_bernstein_matrix(d, s).dot(fctrl) - t, axis=1).max()
+                  for s, t in ((s_fit, target_fit), (s_check, target_check)))
+        if not err <= float(tol):  # (also rejects NaN)
+            continue
+        ctrl = np.empty(fctrl.shape, dtype=object)
+        ctrl[1:-1] = np.vectorize(_exact, otypes=[object])(fctrl[1:-1])
+        ctrl[0], ctrl[-1] = list(p0), list(p1)
+        try:
+            bound = certified_bound(hom, ctrl, target=tol)
+        except WeightError:
+            return None
+        if bound <= tol:
+            return ctrl, bound
+    return None
+
+
+def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segments: int = 10000) -> list:
+    """Fit-then-certify one exact Bézier curve ``F`` on ``[0, 1]``.
+
+    Parameters
+    ----------
+    hom : object array ``(n + 1, k + 1)``
+        Homogeneous coefficients ``(W F, W)`` (weights positive on [0, 1]).
+    tol : positive rational
+    p0, p1 : sequences of rationals, optional
+        Exact end points to interpolate (default ``F(0)``, ``F(1)``).
+    max_degree : int
+        Highest fitting degree before a bisection at the parametric midpoint.
+
+    Returns
+    -------
+    list of ``((a, b), ctrl, bound)``
+        In parameter order: sub-interval of [0, 1], exact control points (shared end points
+        between neighbours) and the certified bound of ``max |F - C|`` on it.
+    """
+    tol = to_rational(tol, where="tol")
+    hom = np.asarray(hom, dtype=object)
+    ends = [tuple(hom[0, :-1] / hom[0, -1]), tuple(hom[-1, :-1] / hom[-1, -1])]
+    p0 = ends[0] if p0 is None else tuple(p0)
+    p1 = ends[1] if p1 is None else tuple(p1)
+    out: list = []
+    stack = [(mpq(0), mpq(1), hom, p0, p1)]
+    while stack:
+        a, b, h, q0, q1 = stack.pop()
+        found = _fit_piece(h, q0, q1, tol, max_degree)
+        if found is not None:
+            out.append(((a, b), found[0], found[1]))
+            if len(out) > max_segments:
+                raise ExactCAGDError(f"fit: more than max_segments = {max_segments} segments needed")
+            continue
+        if b - a < MIN_WIDTH:
+            raise ExactCAGDError(f"fit: tolerance {float(tol):.3g} not reached on a piece narrower than 2^-40")
+        left, right = bz.subdivide(h, mpq(1, 2))
+        mid = tuple(left[-1, :-1] / left[-1, -1])
+        m = (a + b) / 2
+        stack.append((m, b, right, mid, q1))
+        stack.append((a, m, left, q0, mid))
+    return out
+
+
+# ----------------------------------------------------------------------------- whole curve
+def _surface_point(grid, key, point) -> tuple:
+    """Exact ``S(u, v)`` from the patch ``key`` (de Casteljau in both directions)."""
+    u, v = grid.to_local(key, point)
+    h = bz.de_casteljau(bz.de_casteljau(grid.patch_hom(key), u), v)
+    return tuple(h[:-1] / h[-1])
+
+
+def _pieces(joints):
+    """Consecutive kept joints ``(ja, jb)``: each pair bounds one exact image piece."""
+    kept = [j for j in joints if _KEEP.intersection(j.reasons)]
+    pairs = list(zip(kept[:-1], kept[1:]))
+    if any(ja.hi[0] != jb.lo[0] for ja, jb in pairs):  # pragma: no cover - curve knots are kept
+        raise ExactCAGDError("internal: a fit piece spans two pieces of the domain curve")
+    return pairs
+
+
+def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segments: int, start: float):
+    """The ``method="fit"`` branch of :func:`~.driver.approximate` (see the module docstring)."""
+    from .driver import CurveOnSurface, _angle_deg, _gap_bound
+
+    t_split = time.perf_counter()
+    segments, domains, patches, params, ends, bounds = [], [], [], [], [], []
+    cache: dict = {}
+    for ja, jb in _pieces(joints):
+        k, ta = ja.hi
+        _, tb = jb.lo
+        key = grid.locate(*dcurve.point(k, (ta + tb) / 2))
+        (ua, ub), (va, vb) = grid.spans(key)
+        glob = dcurve.restricted(k, ta, tb)
+        local = glob.copy()
+        local[:, 0] = (glob[:, 0] - ua * glob[:, 2]) / (ub - ua)
+        local[:, 1] = (glob[:, 1] - va * glob[:, 2]) / (vb - va)
+        hom = compose_homogeneous_fast(grid.patch_hom(key), local)
+        for j in (ja, jb):
+            if id(j) not in cache:  # one exact point per joint, shared by both neighbours
+                cache[id(j)] = _surface_point(grid, key, j.point)
+        p0, p1 = cache[id(ja)], cache[id(jb)]
+        for (a, b), ctrl, bound in fit_curve(hom, tol, p0, p1, max_degree, max_segments):
+            segments.append(ctrl)
+            bounds.append(bound)
+            patches.append(key)
+            domains.append(make_curve(bz.restrict(glob, a, b)))
+            params.append({"piece": k, "interval": [str(ta + (tb - ta) * a), str(ta + (tb - ta) * b)],
+                           "fit_degree": ctrl.shape[0] - 1})
+            span0, span1 = dcurve.spans[k]
+            t0, t1 = ta + (tb - ta) * a, ta + (tb - ta) * b
+            ends.append(((span0 + (span1 - span0) * t0, ja.exact or a > 0),
+                         (span0 + (span1 - span0) * t1, jb.exact or b < 1)))
+            if len(segments) > max_segments:
+                raise ExactCAGDError(f"more than max_segments = {max_segments} segments needed")
+    t_fit = time.perf_counter()
+    degree = max(c.shape[0] - 1 for c in segments)
+    curves = [BezierCurve(bz.elevate(c, degree - (c.shape[0] - 1))) for c in segments]
+    bound = max(max(bounds), _gap_bound(grid, dcurve, joints))
+    pairs = list(zip(curves[:-1], curves[1:])) + ([(curves[-1], curves[0])] if dcurve.closed and len(curves) > 1 else [])
+    angles = [_angle_deg(_tangent(a, 1), _tangent(b, 0)) for a, b in pairs]
+    t_end = time.perf_counter()
+    return CurveOnSurface(
+        segments=curves,
+        domain_segments=domains,
+        patches=patches,
+        kinds=["fit"] * len(curves),
+        distance_bound=bound,
+        degree=degree,
+        method="fit",
+        tolerance=tol,
+        continuity="C0",
+        max_joint_angle=max(angles) if angles else 0.0,
+        angle_tolerance=None,
+        corners=[j.point for j in joints if j.corner],
+        timings={"split": t_split - start, "distance": t_fit - t_split, "angle": 0.0, "images": 0.0,
+                 "verify": t_end - t_fit, "total": t_end - start, "attempts": len(curves), "angle_rounds": 0},
+        g1_verified=None,
+        closed=dcurve.closed,
+        params=params,
+        ends=ends,
+    )
+
+
+def _tangent(curve: BezierCurve, end: int) -> tuple:
+    p = curve.control_points
+    return tuple(p[1][i] - p[0][i] for i in range(len(p[0]))) if end == 0 else tuple(p[-1][i] - p[-2][i] for i in range(len(p[0])))

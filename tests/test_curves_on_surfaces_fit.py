@@ -1,0 +1,195 @@
+"""``approximate(..., method="fit")``: fit then certify, each check against an independent reference.
+
+* the certified bound is compared with the exact distance ``|S(D(t)) - C(s)|`` at ~200
+  rational parameters, where ``S(D(t))`` is evaluated point by point with the foundation's
+  exact ``BezierSurface.evaluate`` / ``BSplineSurface.evaluate`` and ``D.evaluate`` (no
+  composition involved) and ``C(s)`` with ``BezierCurve.evaluate``;
+* joints: exact equality of neighbouring end points, and of the chain's ends with ``S(D(0))``,
+  ``S(D(1))``;
+* a bound from samples alone is caught by a curve whose error vanishes at every sampled
+  parameter but not in between.
+"""
+from fractions import Fraction as Fr
+import random
+
+import flint
+import numpy as np
+import pytest
+from gmpy2 import mpq
+
+from exactcagd import BezierCurve, BezierSurface, BSplineSurface
+from exactcagd.curves_on_surfaces import approximate, fit
+from exactcagd.curves_on_surfaces.samples import analytic_surface, closed_domain_curve, open_domain_curve
+from exactcagd.errors import InputError
+from exactcagd.exact import bernstein as bz
+
+DOMAIN = BezierCurve([["1/10", "1/5"], ["2/5", "1"], ["7/10", "0"], ["9/10", "4/5"]])
+
+
+def _bicubic(rational: bool, weight_scale=1) -> BezierSurface:
+    rng = random.Random(5)  # the surface of benchmarks/bench_peers_curve_on_surface.py
+    net = [[[Fr(i, 3), Fr(j, 3), Fr(rng.randint(-500, 500), 1000)] for j in range(4)] for i in range(4)]
+    weights = [[Fr(rng.randint(2, 8), 4) * weight_scale for _ in range(4)] for _ in range(4)] if rational else None
+    return BezierSurface(net, weights)
+
+
+def _nurbs() -> BSplineSurface:
+    net = [[[i, j, (i * j) % 3] for j in range(4)] for i in range(5)]
+    w = [[1 + (i + j) % 2 for j in range(4)] for i in range(5)]
+    return BSplineSurface(net, [0, 0, 0, "1/3", "2/3", 1, 1, 1], [0, 0, 0, "1/2", 1, 1, 1], w)
+
+
+CASES = {
+    "bicubic polynomial": lambda: (_bicubic(False), DOMAIN),
+    "bicubic rational": lambda: (_bicubic(True), DOMAIN),
+    # same surface, all weights / 64: the bound must not depend on the weights' scale
+    "bicubic rational, small weights": lambda: (_bicubic(True, Fr(1, 64)), DOMAIN),
+    "B-spline surface, spline curve": lambda: (analytic_surface(7, 7, "face"), open_domain_curve(5)),
+    "NURBS surface, closed spline curve": lambda: (_nurbs(), closed_domain_curve(8)),
+}
+
+
+def _dist_sq(a, b):
+    return sum((x - y) ** 2 for x, y in zip(a, b))
+
+
+def _max_true_error_sq(r, surface, domain, count=200) -> mpq:
+    """Largest exact ``|S(D(t)) - C_i(s)|^2`` over ``count`` rational parameters spread over the chain."""
+    per = max(8, count // len(r.segments))
+    best = mpq(0)
+    for seg, ((t0, _), (t1, _)) in zip(r.segments, r.ends):
+        for k in range(per + 1):
+            s = mpq(2 * k + 1, 2 * per + 2) if k < per else mpq(1)  # interior points and the end
+            u, v = domain.evaluate(t0 + s * (t1 - t0))
+            best = max(best, _dist_sq(surface.evaluate(u, v), seg.evaluate(s)))
+    return best
+
+
+# ----------------------------------------------------------------------------- (a), (b), (c)
+@pytest.mark.parametrize("case", list(CASES))
+def test_bound_covers_the_exact_distance(case):
+    surface, domain = CASES[case]()
+    r = approximate(surface, domain, "1e-3", method="fit")
+    assert r.method == "fit" and r.continuity == "C0" and r.distance_bound <= mpq(1, 1000)
+    assert all(isinstance(s, BezierCurve) and s.dimension == 3 and not s.is_rational for s in r.segments)
+    assert all(s.degree == r.degree for s in r.segments)
+    true_sq = _max_true_error_sq(r, surface, domain)
+    assert true_sq > 0  # not on the surface: a real error to bound
+    assert true_sq <= r.distance_bound**2
+
+
+@pytest.mark.parametrize("rational", [False, True])
+@pytest.mark.parametrize("tol", ["1e-2", "1e-3", "1e-4", "1e-5", "1e-6"])
+def test_bound_below_tolerance(rational, tol):
+    surface = _bicubic(rational)
+    r = approximate(surface, DOMAIN, tol, method="fit")
+    assert r.distance_bound <= mpq(tol) and r.tolerance == mpq(tol)
+    assert 1 <= len(r) <= 4 and r.degree <= 14
+    assert _max_true_error_sq(r, surface, DOMAIN, count=40) <= r.distance_bound**2
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_pieces_join_exactly(case):
+    surface, domain = CASES[case]()
+    r = approximate(surface, domain, "1e-4", method="fit")
+    segs = r.segments
+    for a, b in zip(segs[:-1], segs[1:]):
+        assert a.evaluate(1) == b.evaluate(0)
+    assert segs[0].evaluate(0) == surface.evaluate(*domain.evaluate(r.ends[0][0][0]))
+    assert segs[-1].evaluate(1) == surface.evaluate(*domain.evaluate(r.ends[-1][1][0]))
+    if r.closed:
+        assert segs[-1].evaluate(1) == segs[0].evaluate(0)
+
+
+def test_spline_case_uses_several_patches_and_domain_pieces():
+    surface, domain = CASES["NURBS surface, closed spline curve"]()
+    r = approximate(surface, domain, "1e-4", method="fit")
+    assert len(set(r.patches)) > 2 and len(r.domain_segments) == len(r.segments)
+    for seg, dom, ((t0, _), (t1, _)) in zip(r.segments, r.domain_segments, r.ends):
+        assert dom.evaluate(mpq(1, 3)) == domain.evaluate(t0 + (t1 - t0) / 3)
+
+
+# ----------------------------------------------------------------------------- (d) samples are not a proof
+def _vanishing_at(params) -> tuple:
+    """Bernstein coefficients of ``omega(t) = prod (t - s)`` over the exact values of ``params``."""
+    omega = flint.fmpq_poly([1])
+    for s in sorted({mpq(*float(x).as_integer_ratio()) for x in params}):
+        omega *= flint.fmpq_poly([-flint.fmpq(int(s.numerator), int(s.denominator)), 1])
+    power = [mpq(int(c.p), int(c.q)) for c in omega.coeffs()]
+    return bz.from_power(power, omega.degree()), omega
+
+
+def _curve_with_hidden_error(params, size):
+    """``F = c + size * omega / max|omega| * e_z`` with a cubic ``c``: ``F = c`` at every parameter in ``params``."""
+    coeffs, omega = _vanishing_at(params)
+    n = coeffs.shape[0] - 1
+    grid = [mpq(k, 1000) for k in range(1001)]
+    peak = max(abs(omega(flint.fmpq(int(t.numerator), int(t.denominator)))) for t in grid)
+    scale = mpq(size) / mpq(int(peak.p), int(peak.q))
+    cubic = bz.as_coefficients([[0, 0, 0], [1, 2, 0], [2, -1, "1/2"], [3, 0, 0]])
+    base = bz.elevate(cubic, n - 3)
+    base[:, 2] = base[:, 2] + scale * coeffs
+    return base, cubic, omega, scale
+
+
+def test_certified_bound_sees_error_between_the_samples():
+    fit_params, check_params = fit.sample_parameters()
+    F, cubic, omega, scale = _curve_with_hidden_error(np.concatenate([fit_params, check_params]), "1/100")
+    hom = np.concatenate([F, np.full((F.shape[0], 1), mpq(1), dtype=object)], axis=1)
+    curve_f, curve_c = BezierCurve.from_homogeneous(hom), BezierCurve(cubic)
+
+    def err_sq(t):  # |F(t) - c(t)|^2 = (scale * omega(t))^2
+        w = omega(flint.fmpq(int(t.numerator), int(t.denominator)))
+        return (scale * mpq(int(w.p), int(w.q))) ** 2
+
+    for t in (mpq(1, 3), mpq(5, 7)):  # the construction, checked with the foundation's evaluator
+        assert _dist_sq(curve_f.evaluate(t), curve_c.evaluate(t)) == err_sq(t)
+    # the error is exactly zero at every sampled parameter ...
+    assert all(err_sq(mpq(*float(s).as_integer_ratio())) == 0 for s in list(fit_params) + list(check_params))
+    # ... but not in between; the certificate must see it
+    true_sq = max(err_sq(mpq(k, 1000)) for k in range(1001))
+    assert true_sq >= mpq(1, 10**4)
+    assert fit.certified_bound(hom, cubic) ** 2 >= true_sq
+    assert fit.certified_bound(hom, cubic, target=mpq(1, 10**3)) ** 2 >= true_sq
+
+
+def test_fit_does_not_accept_a_curve_that_is_exact_only_at_its_samples(monkeypatch):
+    # few samples: the cubic interpolates F at all of them, so a bound from samples would be ~0
+    nodes = np.array([0.0, 0.125, 0.375, 0.625, 0.875, 1.0])
+    monkeypatch.setattr(fit, "sample_parameters", lambda: (nodes, nodes[1:-1]))
+    F, cubic, omega, scale = _curve_with_hidden_error(nodes, "1/10")
+    hom = np.concatenate([F, np.full((F.shape[0], 1), mpq(1), dtype=object)], axis=1)
+    tol = mpq(1, 1000)
+    pieces = fit.fit_curve(hom, tol)
+    curve_f = BezierCurve.from_homogeneous(hom)
+    for (a, b), ctrl, bound in pieces:
+        assert bound <= tol
+        c = BezierCurve(ctrl)
+        true_sq = max(_dist_sq(curve_f.evaluate(a + (b - a) * mpq(k, 200)), c.evaluate(mpq(k, 200))) for k in range(201))
+        assert true_sq <= bound**2
+
+
+# ----------------------------------------------------------------------------- inputs
+def test_rational_weights_and_exact_control_points():
+    r = approximate(_bicubic(True), DOMAIN, "1e-5", method="fit")
+    for seg in r.segments:
+        assert all(isinstance(x, type(mpq(0))) for p in seg.control_points for x in p)
+
+
+@pytest.mark.parametrize("tol", [0, "-1/10"])
+def test_nonpositive_tolerance(tol):
+    with pytest.raises(InputError):
+        approximate(_bicubic(False), DOMAIN, tol, method="fit")
+
+
+def test_bad_max_degree():
+    with pytest.raises(InputError):
+        approximate(_bicubic(False), DOMAIN, "1e-3", method="fit", max_degree=0)
+    for bad in (True, 2.0, -3):
+        with pytest.raises(InputError, match="max_degree"):
+            approximate(_bicubic(False), DOMAIN, "1e-3", method="fit", max_degree=bad)
+
+
+def test_max_degree_forces_more_segments():
+    low = approximate(_bicubic(False), DOMAIN, "1e-4", method="fit", max_degree=5)
+    assert low.degree <= 5 and len(low) > 1 and low.distance_bound <= mpq(1, 10**4)
