@@ -127,6 +127,21 @@ def test_approximation_product_is_exact_with_float_companions(tmp_path):
     assert width > 1500  # three panels: domain, 3-D, error
 
 
+def test_fit_approximation_product(tmp_path):
+    """method = "fit" in a scene: exact rational segments within the certified bound; the first
+    segment starts exactly at S(K(0)), evaluated here by de Boor on the scene's surface."""
+    scene = copy.deepcopy(SCENE)
+    scene["products"] = [{"kind": "approximation", "name": "approx", "surface": "s", "curve": "k", "tol": "1/1000", "method": "fit"}]
+    path = tmp_path / "small.json"
+    path.write_text(json.dumps(scene))
+    assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 0
+    data = json.loads((tmp_path / "out" / "small" / "approx.json").read_text())["result"]
+    assert data["method"] == "fit" and sp.Rational(data["distance_bound"]) <= sp.Rational(1, 1000)
+    first = [sp.Rational(c) for c in data["segments"][0]["control_points"][0]]
+    runner = Runner(parse_scene(copy.deepcopy(SCENE)), tmp_path / "x")
+    assert first == [sp.Rational(str(c)) for c in runner.objects["s"].evaluate("1/8", "1/8")]
+
+
 def test_outputs_get_the_usual_file_mode(tmp_path):
     """Atomic writes go through a private temporary file; the result must not stay 0600."""
     from exactcagd.scenes import serialize

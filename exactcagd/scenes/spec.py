@@ -368,8 +368,8 @@ def _check_product(spec, where: str, scene: Scene) -> dict:
         if tol <= 0:
             raise SceneError(f"{where}.tol: tolerance must be positive")
         method = spec.get("method", DEFAULT_APPROXIMATION)
-        if method not in ("cubic", "parabola", "hyperbola", "polyline"):
-            raise SceneError(f"{where}.method: expected cubic, parabola, hyperbola or polyline")
+        if method not in ("cubic", "parabola", "hyperbola", "polyline", "fit"):
+            raise SceneError(f"{where}.method: expected cubic, parabola, hyperbola, polyline or fit")
     if kind == "picture":
         if not isinstance(spec["of"], list) or not spec["of"] or not all(isinstance(r, str) for r in spec["of"]):
             raise SceneError(f"{where}.of: expected a non-empty list of names")
