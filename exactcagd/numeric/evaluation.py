@@ -94,7 +94,7 @@ from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from .fp_error import ETA, MIN_NORMAL, down, gamma_over, round_nearest, round_up, to_float_array
-from .fp_error import up_nonnegative as up
+from .fp_error import up_nonnegative
 
 __all__ = ["evaluate", "evaluate_surface", "METHODS"]
 
@@ -528,7 +528,7 @@ def _surface_coefficients(surface: BezierSurface, method: str) -> tuple[np.ndarr
 # ---------------------------------------------------------------------------- kernels
 def _radius(g, s_hat: np.ndarray, a) -> np.ndarray:
     """``g (S^ + A) + A`` rounded upward, ``g = gamma_over(k)`` (``gamma_k / (1 - k u)``)."""
-    return up(up(g * up(s_hat + a)) + a)
+    return up_nonnegative(up_nonnegative(g * up_nonnegative(s_hat + a)) + a)
 
 
 def _finish(values: np.ndarray, radii: np.ndarray) -> np.ndarray:
@@ -549,7 +549,7 @@ def _surface_chunk(m, c, c_abs, u, v, bound):
     t_hat = m.run(s_rows, u, True)
     a2 = m.underflow(l, u, np.maximum(np.abs(rows), s_rows))
     a1_max = np.max(np.broadcast_to(a1, s_rows.shape), axis=0)
-    a = up(up(a1_max * m.spread(l, u)) + a2)
+    a = up_nonnegative(up_nonnegative(a1_max * m.spread(l, u)) + a2)
     k = m.count(mm, v) + m.count(l, u)
     return values, _finish(values, _radius(gamma_over(k), t_hat, a))
 
@@ -565,10 +565,10 @@ def _project(hom: np.ndarray, rad: np.ndarray | None):
         aw = np.abs(w)
         low = down(aw - ew)
         valid = low > 0
-        x_bound = up(up(np.abs(x) + ex) * ew)
-        term = up(ex + up(x_bound / np.where(valid, low, 1.0)))
-        d = up(term / np.where(valid, aw, 1.0))
-        r = up(d + up(up(np.abs(q) * _U_QUOTIENT) + ETA))
+        x_bound = up_nonnegative(up_nonnegative(np.abs(x) + ex) * ew)
+        term = up_nonnegative(ex + up_nonnegative(x_bound / np.where(valid, low, 1.0)))
+        d = up_nonnegative(term / np.where(valid, aw, 1.0))
+        r = up_nonnegative(d + up_nonnegative(up_nonnegative(np.abs(q) * _U_QUOTIENT) + ETA))
         r = np.where(valid, r, np.inf)
     return q, _finish(q, r)
 
