@@ -193,3 +193,32 @@ def test_bad_max_degree():
 def test_max_degree_forces_more_segments():
     low = approximate(_bicubic(False), DOMAIN, "1e-4", method="fit", max_degree=5)
     assert low.degree <= 5 and len(low) > 1 and low.distance_bound <= mpq(1, 10**4)
+
+
+def test_irrational_stationary_point_needs_no_cut():
+    """D'(t) = 0 at the irrational t = 1/sqrt(2): x' = (2t^2 - 1)/4, y' = t (2t^2 - 1)/2.  The
+    on-surface methods refuse it (a G1 approximation is undefined there); the fit is C0 and
+    parametric, so it needs no cut there, and its bound still covers the exact distance."""
+    import sympy as sp
+
+    from exactcagd.errors import DomainError
+
+    t = sp.Symbol("t")
+    x = sp.Rational(1, 2) + (sp.Rational(2, 3) * t**3 - t) / 4
+    y = sp.Rational(1, 2) + (t**4 / 2 - t**2 / 2) / 2
+    # Bernstein coefficients of degree 4 from the power form (sympy, independent of the package)
+    points = []
+    for i in range(5):
+        coords = []
+        for f in (x, y):
+            a = sp.Poly(f, t).all_coeffs()[::-1] + [0] * 5
+            coords.append(str(sum(sp.binomial(i, k) / sp.binomial(4, k) * a[k] for k in range(i + 1))))
+        points.append(coords)
+    domain = BezierCurve(points)
+    assert domain.evaluate("1/3") == tuple(mpq(str(f.subs(t, sp.Rational(1, 3)))) for f in (x, y))
+    surface = _bicubic(False)
+    with pytest.raises(DomainError, match="singular point"):
+        approximate(surface, domain, "1e-3", method="parabola")
+    r = approximate(surface, domain, "1e-3", method="fit")
+    assert r.distance_bound <= mpq(1, 1000)
+    assert _max_true_error_sq(r, surface, domain) <= r.distance_bound**2

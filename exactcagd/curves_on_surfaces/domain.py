@@ -185,11 +185,13 @@ class DomainCurve:
         return bz.restrict(self.homs[k], ta, tb)
 
     # ------------------------------------------------------------------ events
-    def events(self, k: int, u_lines, v_lines, domain=None) -> list[Event]:
+    def events(self, k: int, u_lines, v_lines, domain=None, monotone: bool = True) -> list[Event]:
         """Sorted, merged cuts of piece ``k`` in the open interval ``(0, 1)``.
 
         ``u_lines``/``v_lines``: knot values of the surface; ``domain`` =
         ``((u0, u1), (v0, v1))`` raises :class:`DomainError` if the piece leaves it.
+        ``monotone=False`` leaves out the monotonicity and stationary-point cuts (only the
+        knot-line crossings are needed, e.g. by the fit route, which is C0 anyway).
         """
         p = self._polys[k]
         hom = self.homs[k]
@@ -214,13 +216,13 @@ class DomainCurve:
                     continue  # the piece runs along this knot line
                 roots = [(r, m) for r, m in real_roots(_coeffs(poly), 0, 1) if m % 2 == 1]
                 add(roots, **{key: value})
-        for key, g in (("mono_u", p["gu"]), ("mono_v", p["gv"])):
+        if p["gu"] == 0 and p["gv"] == 0:
+            raise DomainError(f"the domain curve is constant on its piece {k}")
+        for key, g in (("mono_u", p["gu"]), ("mono_v", p["gv"])) if monotone else ():
             if g != 0:
                 add([(r, m) for r, m in real_roots(_coeffs(g), 0, 1) if m % 2 == 1], **{key: True})
         common = p["gu"].gcd(p["gv"]) if (p["gu"] != 0 and p["gv"] != 0) else (p["gu"] if p["gv"] == 0 else p["gv"])
-        if p["gu"] == 0 and p["gv"] == 0:
-            raise DomainError(f"the domain curve is constant on its piece {k}")
-        if common.degree() > 0 and p["gu"] != 0 and p["gv"] != 0:
+        if monotone and common.degree() > 0 and p["gu"] != 0 and p["gv"] != 0:
             for r, _ in real_roots(_coeffs(common), 0, 1):
                 if r == 0 or r == 1:
                     continue
@@ -302,15 +304,15 @@ class DomainCurve:
             raise DomainError("degenerate direction at an irrational cut")
         return Joint((k, lo), (k, hi), (u, v), (du, dv), (du, dv), False, False, reasons + ("irrational",))
 
-    def joints(self, u_lines, v_lines, domain=None, on_corner: str = "error") -> list[Joint]:
-        """All joints in order along the curve, start and end included."""
+    def joints(self, u_lines, v_lines, domain=None, on_corner: str = "error", monotone: bool = True) -> list[Joint]:
+        """All joints in order along the curve, start and end included (``monotone``: see :meth:`events`)."""
         joints: list[Joint] = []
         n = len(self.curves)
         for k in range(n):
             if k == 0:
                 left, right = self.taylor_directions(0, 0)
                 joints.append(Joint((0, mpq(0)), (0, mpq(0)), self.point(0, 0), None, right, True, False, ("start",)))
-            for ev in self.events(k, u_lines, v_lines, domain):
+            for ev in self.events(k, u_lines, v_lines, domain, monotone):
                 joints.append(self.joint_for_event(k, ev))
             if k + 1 < n:
                 left, _ = self.taylor_directions(k, 1)
