@@ -227,7 +227,7 @@ def _case(name, rational, tols, methods_at, quick, occ, rows, plot):
         for method in methods_at(tol):
             holder = {}
             timing = measure(lambda m=method: holder.__setitem__("r", approximate(surface, domain, tol, m)),
-                             repeat=1, budget=30, memory=not quick)
+                             repeat=3, budget=30, memory=not quick)
             r = holder["r"]
             err = hausdorff(Pieces.from_curves(r.segments), F)
             rows.append([name, f"exactcagd {method}", tol, len(r), r.degree, fmt_err(err), f"{float(r.distance_bound):.2e}",
