@@ -100,10 +100,15 @@ def _scaled_to_power(p: flint.fmpq_poly, n: int) -> flint.fmpq_poly:
 
 def bernstein_on(power: flint.fmpq_poly, n: int, a, b) -> list:
     """Bernstein coefficients (degree ``n``) of the power-form polynomial on ``[a, b]``."""
+    return [from_fmpq(c) for c in _bernstein_on_fmpq(power, n, a, b)]
+
+
+def _bernstein_on_fmpq(power: flint.fmpq_poly, n: int, a, b) -> list:
+    """:func:`bernstein_on` as flint ``fmpq`` (the bisection reads only a few of them as ``mpq``)."""
     q = power(flint.fmpq_poly([_fmpq(a), _fmpq(b - a)]))
     hat = _reverse(_reverse(q, n)(flint.fmpq_poly([1, 1])), n).coeffs()
     hat = hat + [flint.fmpq(0)] * (n + 1 - len(hat))
-    return [from_fmpq(c) / bz.binomial(n, i) for i, c in enumerate(hat)]
+    return [c / bz.binomial(n, i) for i, c in enumerate(hat)]
 
 
 def _squared_error(F: BezierCurve, cubic: BezierCurve, phi):
@@ -124,11 +129,15 @@ def _squared_error(F: BezierCurve, cubic: BezierCurve, phi):
 
 
 def _leaf_bound(e: list, w2: list):
-    """Upper bound of ``e / w2`` on the leaf, or ``None`` when ``w2`` is not yet bounded below."""
+    """Upper bound of ``e / w2`` on the leaf (``mpq``), or ``None`` when ``w2`` is not yet bounded below.
+
+    ``e`` and ``w2`` are Bernstein coefficients as flint ``fmpq`` (from
+    :func:`_bernstein_on_fmpq`): ``e / w2 <= max e / min w2``.
+    """
     low = min(w2)
     if low <= 0:
         return None
-    return max(max(e), mpq(0)) / low
+    return max(from_fmpq(max(e)), mpq(0)) / from_fmpq(low)
 
 
 def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.02, max_leaves: int = 400, target=None) -> mpq:
@@ -172,10 +181,10 @@ def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.
 
     def push(a, b, depth):
         nonlocal counter, lower
-        ce, cw = bernstein_on(e_pow, D, a, b), bernstein_on(w_pow, D, a, b)
-        for i in (0, -1):
+        ce, cw = _bernstein_on_fmpq(e_pow, D, a, b), _bernstein_on_fmpq(w_pow, D, a, b)
+        for i in (0, -1):  # end coefficients are the values E(a), W2(a), E(b), W2(b)
             if cw[i] > 0:
-                lower = max(lower, ce[i] / cw[i])
+                lower = max(lower, from_fmpq(ce[i]) / from_fmpq(cw[i]))
         bound = _leaf_bound(ce, cw)
         key = (0, 0) if bound is None else (1, -bound)
         heapq.heappush(heap, (key, counter, depth, a, b, bound))
