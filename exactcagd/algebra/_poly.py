@@ -24,7 +24,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DimensionError, InputError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import from_fmpq, to_fmpq, to_rational
+from ..exact.scalars import from_fmpq, to_fmpq
 
 __all__ = [
     "X_SYM",

@@ -18,7 +18,7 @@ import bisect
 
 import numpy as np
 
-from ..errors import DomainError, InputError, KnotError
+from ..errors import DomainError, KnotError
 from .scalars import to_count, to_rational
 
 __all__ = [

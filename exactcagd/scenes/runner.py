@@ -24,7 +24,7 @@ from .. import __version__
 from ..errors import ExactCAGDError, InputError
 from . import products as handlers
 from .build import build_curve, build_surface
-from .serialize import atomic_write_bytes, atomic_write_text, dumps
+from .serialize import atomic_write_bytes
 from .spec import Scene, SceneError, load_scene
 
 __all__ = ["Runner", "cmd_plan", "cmd_run"]
