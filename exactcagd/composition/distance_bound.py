@@ -87,17 +87,6 @@ def _round(q: mpq, up: bool) -> mpq:
     return mpq(n) / scale
 
 
-def _reverse(p: flint.fmpq_poly, n: int) -> flint.fmpq_poly:
-    c = p.coeffs()
-    c = c + [flint.fmpq(0)] * (n + 1 - len(c))
-    return flint.fmpq_poly(c[::-1])
-
-
-def _scaled_to_power(p: flint.fmpq_poly, n: int) -> flint.fmpq_poly:
-    """``(1 - t)^n p(t / (1 - t))``: scaled Bernstein form -> power form."""
-    return _reverse(_reverse(p, n)(flint.fmpq_poly([-1, 1])), n)
-
-
 def bernstein_on(power: flint.fmpq_poly, n: int, a, b) -> list:
     """Bernstein coefficients (degree ``n``) of the power-form polynomial on ``[a, b]``."""
     return [from_fmpq(c) for c in _bernstein_on_fmpq(power, n, a, b)]
@@ -106,7 +95,7 @@ def bernstein_on(power: flint.fmpq_poly, n: int, a, b) -> list:
 def _bernstein_on_fmpq(power: flint.fmpq_poly, n: int, a, b) -> list:
     """:func:`bernstein_on` as flint ``fmpq`` (the bisection reads only a few of them as ``mpq``)."""
     q = power(flint.fmpq_poly([_fmpq(a), _fmpq(b - a)]))
-    hat = _reverse(_reverse(q, n)(flint.fmpq_poly([1, 1])), n).coeffs()
+    hat = bz.power_to_scaled(q, n).coeffs()
     hat = hat + [flint.fmpq(0)] * (n + 1 - len(hat))
     return [c / bz.binomial(n, i) for i, c in enumerate(hat)]
 
@@ -172,8 +161,8 @@ def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.
     if F.dimension != cubic.dimension:
         raise InputError(f"dimensions differ: {F.dimension} vs {cubic.dimension}")
     e_pow, w_pow, D = _squared_error(F, cubic, phi)
-    e_pow = _scaled_to_power(scaled([_round(x, True) for x in unscaled(e_pow, D)]), D)
-    w_pow = _scaled_to_power(scaled([_round(x, False) for x in unscaled(w_pow, D)]), D)
+    e_pow = bz.scaled_to_power(scaled([_round(x, True) for x in unscaled(e_pow, D)]), D)
+    w_pow = bz.scaled_to_power(scaled([_round(x, False) for x in unscaled(w_pow, D)]), D)
     target2 = None if target is None else mpq(to_rational_array([target])[0]) ** 2
     lower = mpq(0)
     heap: list = []

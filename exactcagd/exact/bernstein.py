@@ -43,6 +43,8 @@ __all__ = [
     "integral",
     "to_power",
     "from_power",
+    "scaled_to_power",
+    "power_to_scaled",
     "blossom",
     "restrict",
     "along",
@@ -179,19 +181,41 @@ def to_power(c: np.ndarray) -> np.ndarray:
 
 
 def _to_power_flint(column) -> list:
-    """Power coefficients of one rational Bernstein column by a Taylor shift.
-
-    With ``b_i = C(n,i) c_i`` and ``R(y) = sum_i b_i y^(n-i)``,
-    ``t^-n p(t) = sum_i b_i (1/t - 1)^(n-i) = R(1/t - 1)``: so ``a_k`` is the coefficient
-    of ``x^(n-k)`` in ``R(x - 1)`` (one exact flint composition instead of ``O(n^2)``
-    Python rational operations).
-    """
+    """Power coefficients of one rational Bernstein column through :func:`scaled_to_power`."""
     import flint
 
     n = len(column) - 1
-    shifted = flint.fmpq_poly([to_fmpq(column[n - j]) * binomial(n, n - j) for j in range(n + 1)])(flint.fmpq_poly([-1, 1]))
-    coeffs = shifted.coeffs()
-    return [from_fmpq(coeffs[n - k]) if n - k < len(coeffs) else mpq(0) for k in range(n + 1)]
+    power = scaled_to_power(flint.fmpq_poly([to_fmpq(c) * binomial(n, i) for i, c in enumerate(column)]), n)
+    coeffs = power.coeffs()
+    return [from_fmpq(coeffs[k]) if k < len(coeffs) else mpq(0) for k in range(n + 1)]
+
+
+def _reverse(p, n: int):
+    """``t^n p(1/t)`` of a flint polynomial of degree ``<= n``."""
+    import flint
+
+    c = p.coeffs()
+    return flint.fmpq_poly((c + [flint.fmpq(0)] * (n + 1 - len(c)))[::-1])
+
+
+def scaled_to_power(p, n: int):
+    """Scaled Bernstein form -> power form, for flint ``fmpq_poly`` (notes 3.3).
+
+    ``p`` holds ``b_i = C(n,i) c_i`` as the coefficient of ``t^i``; the result is
+    ``(1 - t)^n p(t / (1 - t)) = sum_i c_i B_i^n(t)``.  With ``R(y) = y^n p(1/y)``,
+    ``t^-n (1 - t)^n p(t / (1 - t)) = R(1/t - 1)``: one Taylor shift between two
+    reversals, instead of ``O(n^2)`` rational operations.
+    """
+    import flint
+
+    return _reverse(_reverse(p, n)(flint.fmpq_poly([-1, 1])), n)
+
+
+def power_to_scaled(p, n: int):
+    """Power form -> scaled Bernstein form of degree ``n`` (the inverse of :func:`scaled_to_power`)."""
+    import flint
+
+    return _reverse(_reverse(p, n)(flint.fmpq_poly([1, 1])), n)
 
 
 def from_power(a, degree: int | None = None) -> np.ndarray:
