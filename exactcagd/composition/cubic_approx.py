@@ -38,17 +38,22 @@ from fractions import Fraction
 import numpy as np
 from gmpy2 import mpq
 
-from ..errors import InputError, NotSupportedError
+from ..errors import InputError
 from ..exact.scalars import rational_str, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from .distance_bound import distance_bound
 
-__all__ = ["approximate_cubic", "approximate_cubic_curve", "CubicApproximation", "CubicSegment", "fit_cubic"]
+__all__ = ["approximate_cubic", "approximate_cubic_curve", "CubicApproximation", "CubicSegment", "fit_cubic", "bernstein_basis_float"]
 
 
 # ----------------------------------------------------------------------------- float helpers
-def _bernstein_matrix(n: int, t: np.ndarray) -> np.ndarray:
+def bernstein_basis_float(n: int, t: np.ndarray) -> np.ndarray:
+    """Binary64 values ``B_i^n(t_j)`` as a ``(len(t), n + 1)`` matrix, for least-squares fits.
+
+    Float only (sampling and fitting, never a certificate); also used by the fit route of
+    :mod:`exactcagd.curves_on_surfaces.fit`.
+    """
     from math import comb
 
     t = np.asarray(t, dtype=float)[:, None]
@@ -67,21 +72,21 @@ class _FloatCurve:
         self.dhom = self.n * (self.hom[1:] - self.hom[:-1]) if self.n > 0 else np.zeros_like(self.hom)
 
     def __call__(self, t):
-        h = _bernstein_matrix(self.n, t) @ self.hom
+        h = bernstein_basis_float(self.n, t) @ self.hom
         return h[:, :-1] / h[:, -1:]
 
     def derivative(self, t):
-        h = _bernstein_matrix(self.n, t) @ self.hom
+        h = bernstein_basis_float(self.n, t) @ self.hom
         if self.n == 0:
             return np.zeros((len(np.atleast_1d(t)), self.hom.shape[1] - 1))
-        dh = _bernstein_matrix(self.n - 1, t) @ self.dhom
+        dh = bernstein_basis_float(self.n - 1, t) @ self.dhom
         w, dw = h[:, -1:], dh[:, -1:]
         return (dh[:, :-1] * w - h[:, :-1] * dw) / w**2
 
 
 def _cubic_float(b: np.ndarray, t: np.ndarray):
-    m = _bernstein_matrix(3, t)
-    d = _bernstein_matrix(2, t) @ (3 * (b[1:] - b[:-1]))
+    m = bernstein_basis_float(3, t)
+    d = bernstein_basis_float(2, t) @ (3 * (b[1:] - b[:-1]))
     return m @ b, d
 
 
@@ -194,7 +199,7 @@ def fit_cubic(F: BezierCurve, samples: int | None = None, iterations: int = 8, e
     fb0, fb3 = np.array([float(x) for x in b0]), np.array([float(x) for x in b3])
     d0 = np.zeros_like(fb0) if t0dir is None else np.array([float(x) for x in t0dir])
     d1 = np.zeros_like(fb0) if t1dir is None else np.array([float(x) for x in t1dir])
-    basis = _bernstein_matrix(3, t)
+    basis = bernstein_basis_float(3, t)
     a1, a2 = d0[None, :] * basis[:, 1:2], d1[None, :] * basis[:, 2:3]
     lam = np.array([1.0 / 3.0, 1.0 / 3.0])
     for it in range(iterations + 1):
@@ -231,7 +236,7 @@ def _reparametrization(tstar: np.ndarray, t: np.ndarray, degree: int = 3) -> lis
     Least squares for the interior coefficients; falls back to the identity when a
     coefficient leaves [0, 1] (then ``phi`` would not map [0, 1] into [0, 1]).
     """
-    M = _bernstein_matrix(degree, tstar)
+    M = bernstein_basis_float(degree, tstar)
     rhs = t - M[:, -1]
     coef = np.linalg.lstsq(M[:, 1:-1], rhs, rcond=None)[0] if degree > 1 else np.array([])
     exact = [mpq(0)] + [_short_rational(float(c)) for c in coef] + [mpq(1)]
@@ -258,7 +263,7 @@ def _approximate_piece(F: BezierCurve, interval, tol: mpq, max_segments: int, op
     if bound <= tol or options["splits_left"] <= 0:
         if options.get("tight", True):  # the acceptance test stopped early: tighten the report
             bound = min(bound, distance_bound(F, cubic, phi, rel=0.05, max_leaves=64))
-        fphi = _bernstein_matrix(len(phi) - 1, np.linspace(0, 1, 201)) @ np.array([float(x) for x in phi])
+        fphi = bernstein_basis_float(len(phi) - 1, np.linspace(0, 1, 201)) @ np.array([float(x) for x in phi])
         dense = np.linspace(0, 1, 201)
         ctrl = np.array([[float(x) for x in p] for p in cubic.points_array()])
         X, _ = _cubic_float(ctrl, fphi)

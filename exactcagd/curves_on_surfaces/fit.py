@@ -39,11 +39,11 @@ True
 from __future__ import annotations
 
 import time
-from math import comb
 
 import numpy as np
 from gmpy2 import mpq
 
+from ..composition.cubic_approx import bernstein_basis_float
 from ..composition.distance_bound import distance_bound, sqrt_upper
 from ..composition.fast import compose_homogeneous_fast
 from ..errors import ExactCAGDError, WeightError
@@ -75,15 +75,8 @@ def sample_parameters() -> tuple[np.ndarray, np.ndarray]:
     return fit, (fit[:-1] + fit[1:]) / 2
 
 
-def _bernstein_matrix(n: int, t: np.ndarray) -> np.ndarray:
-    t = np.asarray(t, dtype=float)[:, None]
-    i = np.arange(n + 1)[None, :]
-    coef = np.array([float(comb(n, k)) for k in range(n + 1)])[None, :]
-    return coef * t**i * (1 - t) ** (n - i)
-
-
 def _float_points(hom: np.ndarray, t: np.ndarray) -> np.ndarray:
-    h = _bernstein_matrix(hom.shape[0] - 1, t) @ hom
+    h = bernstein_basis_float(hom.shape[0] - 1, t) @ hom
     return h[:, :-1] / h[:, -1:]
 
 
@@ -158,8 +151,8 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     polynomial = all(x == hom[0, -1] for x in hom[:, -1])
     top = min(max_degree, n) if polynomial else max_degree
     for d in range(max(1, min(3, top)), top + 1):
-        fctrl = _least_squares(_bernstein_matrix(d, s_fit), target_fit, f0, f1)
-        err = max(np.linalg.norm(_bernstein_matrix(d, s).dot(fctrl) - t, axis=1).max()
+        fctrl = _least_squares(bernstein_basis_float(d, s_fit), target_fit, f0, f1)
+        err = max(np.linalg.norm(bernstein_basis_float(d, s).dot(fctrl) - t, axis=1).max()
                   for s, t in ((s_fit, target_fit), (s_check, target_check)))
         if not err <= float(tol):  # (also rejects NaN)
             continue
