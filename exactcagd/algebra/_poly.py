@@ -164,15 +164,14 @@ def mpoly_to_sympy(p, gens) -> sympy.Poly:
     from sympy.polys.domains import QQ, ZZ
     from sympy.polys.polyclasses import DMP
 
-    data = p.to_dict()
-    integral = all(not isinstance(c, flint.fmpq) or c.q == 1 for c in data.values())
-    domain = ZZ if integral else QQ
-    rep = {
-        tuple(int(e) for e in mono): (ZZ(int(c.p)) if isinstance(c, flint.fmpq) else ZZ(int(c)))
-        if integral
-        else (QQ(int(c.p), int(c.q)) if isinstance(c, flint.fmpq) else QQ(int(c)))
-        for mono, c in data.items()
+    fractions = {
+        tuple(int(e) for e in mono): (int(c.p), int(c.q)) if isinstance(c, flint.fmpq) else (int(c), 1)
+        for mono, c in p.to_dict().items()
     }
+    if all(q == 1 for _, q in fractions.values()):
+        rep, domain = {m: ZZ(n) for m, (n, _) in fractions.items()}, ZZ
+    else:
+        rep, domain = {m: QQ(n, q) for m, (n, q) in fractions.items()}, QQ
     return sympy.Poly.new(DMP.from_dict(rep, len(gens) - 1, domain), *gens)
 
 
