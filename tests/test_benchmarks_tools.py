@@ -50,9 +50,9 @@ def test_quick_and_full_runs_never_share_result_files(tmp_path, monkeypatch):
     call_main(module, False)
     assert written == [tmp_path / "topic.md", tmp_path / "full" / "topic.md"]
     assert "quick=True" in written[0].read_text() and "quick=False" in written[1].read_text()
+    monkeypatch.setattr(common, "_PARSED_QUICK", None)  # restored after the test: parse_quick sets it
     monkeypatch.setattr(sys, "argv", ["bench_x", "--quick"])
     assert common.parse_quick("x") and common.results_dir() == tmp_path
-    monkeypatch.setattr(common, "_PARSED_QUICK", None)
 
 
 def test_optional_peer_absent(monkeypatch, capsys):
