@@ -89,7 +89,7 @@ def build_parser() -> argparse.ArgumentParser:
     verify.add_argument("--fast", action="store_true", help="skip the claims marked slow")
     verify.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
     verify.add_argument("--trace", metavar="KEY", help="print the derivation trace of one claim (substring of its key)")
-    verify.add_argument("--out", default=None, help="directory for LEDGER.md and ledger.json (default: proofs/)")
+    verify.add_argument("--out", default=None, help="directory for LEDGER.md and ledger.json (default: the current directory; --doc/--fast runs write LEDGER-<doc>[-fast].md, never the full ledger)")
     verify.set_defaults(func=_lazy("exactcagd.apps.verify", "main"))
 
     for name, helptext in (("plan", "show what a scene will compute and what is skipped"), ("run", "compute a scene")):

@@ -25,7 +25,7 @@ print("P2 - P1 =", fmt(b.relative((2, 4, 5), (1, 1, 1))), " P3 - P1 =", fmt(b.re
 print("cross =", fmt(b.cross((1, 3, 4), (2, 1, 5))), " area =", b.triangle_area((1, 1, 1), (2, 4, 5), (3, 2, 6)))
 
 step("1.3 rotate (5,7,3) by 90 deg about the axis through (1,1,1) with direction (2,1,2)")
-from proofs.sederberg_01_basics import _trace_rotation  # noqa: E402
+from exactcagd.proofs.sederberg_01_basics import _trace_rotation  # noqa: E402
 
 _trace_rotation()
 print("a rational angle instead: tan(theta/2) = 1/2 gives (cos, sin) =", fmt(b.cos_sin_from_tan_half("1/2")))

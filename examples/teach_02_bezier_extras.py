@@ -13,7 +13,7 @@ from exactcagd.toolbox import bezier_extras as bx
 
 step("2.9.3 curvature at t = 0 of P0=(0,0),w0=1; P1=(4,3),w1=2; P2=(0,5),w2=4")
 c = BezierCurve([[0, 0], [4, 3], [0, 5]], weights=[1, 2, 4])
-from proofs.sederberg_02_extras import _trace_curvature  # noqa: E402
+from exactcagd.proofs.sederberg_02_extras import _trace_curvature  # noqa: E402
 
 _trace_curvature()
 d = bx.derivatives_at(c, 0, 2)

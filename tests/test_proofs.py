@@ -1,7 +1,7 @@
 """Run every registered proof of the ledger (fast ones always, heavy ones under -m slow)."""
 import pytest
 
-from proofs._ledger import discover, run_claim
+from exactcagd.proofs._ledger import discover, run_claim
 
 CLAIMS = discover()
 
@@ -30,7 +30,7 @@ import json  # noqa: E402
 
 from exactcagd.apps import verify as verify_app  # noqa: E402
 from exactcagd.cli import main as cli_main  # noqa: E402
-from proofs._ledger import Claim, erratum, verified  # noqa: E402
+from exactcagd.proofs._ledger import Claim, erratum, verified  # noqa: E402
 
 
 def _fake_claims():

@@ -17,13 +17,13 @@ _CLAIMS: dict = {}
 
 
 def _init_worker() -> None:
-    from proofs._ledger import discover
+    from exactcagd.proofs._ledger import discover
 
     _CLAIMS.update({c.key: c for c in discover()})
 
 
 def _run_key(key: str) -> dict:
-    from proofs._ledger import run_claim
+    from exactcagd.proofs._ledger import run_claim
 
     if not _CLAIMS:
         _init_worker()
@@ -56,7 +56,7 @@ def _section_key(section: str):
 
 
 def select_claims(doc=None, fast=False):
-    from proofs._ledger import discover
+    from exactcagd.proofs._ledger import discover
 
     claims = [c for c in discover() if (doc is None or c.doc == doc) and not (fast and c.slow)]
     return sorted(claims, key=lambda c: (c.doc, _section_key(c.section), c.ref, c.key))
@@ -67,7 +67,7 @@ def run_ledger(claims, jobs: int = 2, progress=None) -> list[dict]:
     order = {c.key: i for i, c in enumerate(claims)}
     rows = []
     if jobs <= 1 or len(claims) < 2:
-        from proofs._ledger import run_claim
+        from exactcagd.proofs._ledger import run_claim
 
         for c in claims:
             rows.append(_row_dict(run_claim(c)))
@@ -88,7 +88,7 @@ def _cell(text) -> str:
 
 
 def ledger_markdown(rows: list[dict], total_seconds: float) -> str:
-    from proofs._ledger import DOCS
+    from exactcagd.proofs._ledger import DOCS
 
     counts: dict = {}
     for r in rows:
@@ -120,9 +120,18 @@ def ledger_markdown(rows: list[dict], total_seconds: float) -> str:
 
 
 def _default_out() -> Path:
-    import proofs
+    """The current directory: a run never writes into the installed package."""
+    return Path.cwd()
 
-    return Path(proofs.__file__).resolve().parent
+
+def ledger_basename(doc=None, fast=False) -> str:
+    """``LEDGER`` for the full ledger; a partial run gets its own name so it never overwrites it.
+
+    >>> ledger_basename(), ledger_basename("yang"), ledger_basename(fast=True)
+    ('LEDGER', 'LEDGER-yang', 'LEDGER-fast')
+    """
+    parts = ["LEDGER"] + ([doc] if doc else []) + (["fast"] if fast else [])
+    return "-".join(parts)
 
 
 def main(args) -> int:
@@ -142,14 +151,15 @@ def main(args) -> int:
     total = time.perf_counter() - start
     out = Path(args.out) if args.out else _default_out()
     out.mkdir(parents=True, exist_ok=True)
-    _atomic_write(out / "LEDGER.md", ledger_markdown(rows, total))
-    _atomic_write(out / "ledger.json", json.dumps({"seconds": round(total, 2), "claims": rows}, indent=1))
+    base = ledger_basename(args.doc, args.fast)
+    _atomic_write(out / f"{base}.md", ledger_markdown(rows, total))
+    _atomic_write(out / f"{base.lower()}.json", json.dumps({"seconds": round(total, 2), "claims": rows}, indent=1))
     failed = [r for r in rows if r["status"] == "FAILED"]
     if args.json:
         print(json.dumps({"seconds": round(total, 2), "claims": rows}, indent=1))
     else:
         print(_summary_table(rows))
-        print(f"\n{len(rows)} claims in {total:.1f} s; ledger written to {out / 'LEDGER.md'}")
+        print(f"\n{len(rows)} claims in {total:.1f} s; ledger written to {out / (base + '.md')}")
         for r in failed:
             print(f"FAILED {r['key']}: {r['detail']}")
     return 1 if failed else 0
@@ -164,7 +174,7 @@ def _summary_table(rows: list[dict]) -> str:
 
 
 def _trace(fragment: str) -> int:
-    from proofs._ledger import discover
+    from exactcagd.proofs._ledger import discover
 
     matches = [c for c in discover() if fragment in c.key]
     if not matches:

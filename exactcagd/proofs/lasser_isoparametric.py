@@ -1,0 +1,220 @@
+"""Lasser & Bonneau (000), sections III-VI: Statements 1, 2, eqs. (8)-(12), (17), (18), and the
+strategy for isoparametric trim curves (sections IV and VI)."""
+
+from __future__ import annotations
+
+import itertools
+import random
+from fractions import Fraction as Fr
+
+import numpy as np
+import sympy
+
+from exactcagd import BezierCurve, BezierSurface
+from exactcagd.composition import compose
+from exactcagd.composition.isoparametric import statement1_points
+from exactcagd.composition.lasser import compose_homogeneous_lasser, lasser_constant, multi_indices, polar_value
+from exactcagd.exact import bernstein as bz
+from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
+from exactcagd.proofs.lasser_composition import random_instance
+
+
+def _iso_symbolic(l, m, rational=False):
+    """Symbolic net and a symbolic v-line (N = 1) u0 -> u1 at v = s."""
+    net = np.empty((l + 1, m + 1, 2), dtype=object)
+    for i in range(l + 1):
+        for j in range(m + 1):
+            w = sympy.Symbol(f"w{i}{j}") if rational else sympy.Integer(1)
+            net[i, j] = [w * sympy.Symbol(f"f{i}{j}"), w]
+    u0, u1, s = sympy.symbols("u0 u1 s")
+    curve = np.array([[u0, s, sympy.Integer(1)], [u1, s, sympy.Integer(1)]], dtype=object)
+    return net, curve, (u0, u1, s)
+
+
+def _F_a(net, u0, u1, s, a):
+    """F_a = F^{l,m}_{0,0}(u_I^l, v*^m) with |I^u| = a (a ones among the l u-indices)."""
+    l, m = net.shape[0] - 1, net.shape[1] - 1
+    level = net
+    for x in [u1] * a + [u0] * (l - a):
+        level = (1 - x) * level[:-1] + x * level[1:]
+    col = level[0]
+    for _ in range(m):
+        col = (1 - s) * col[:-1] + s * col[1:]
+    return col[0]
+
+
+@claim(doc="lasser", section="III", ref="(8)", statement="for N = 1, (5) becomes C^{l,m}_R(N, I) = 1 / C(l+m, R)")
+def eq8():
+    for l, m in itertools.product(range(5), range(5)):
+        for R in range(l + m + 1):
+            assert all(lasser_constant(l, m, 1, iu, iv) == Fr(1, bz.binomial(l + m, R)) for iu, iv in multi_indices(l, m, 1, R))
+    return reconstructed("(5) becomes (8)", "(7) becomes (8)", "the constants are (7), not the curve (5); C(1, 0) = C(1, 1) = 1 gives 1/C(l+m, R); checked for l, m <= 4")
+
+
+@claim(doc="lasser", section="III", ref="(4) simplifies to", statement="(4) simplifies to B_R = 1/C(l+m,R) sum_{|I|=R} F(u_I^l, v_I^m)")
+def eq_after_8():
+    net, curve, _ = _iso_symbolic(2, 2)
+    general = compose_homogeneous_lasser(net, curve)
+    for R in range(5):
+        direct = sum((polar_value(net, [curve[i, 0] for i in iu], [curve[i, 1] for i in iv]) for iu, iv in multi_indices(2, 2, 1, R)), net[0, 0] * 0) / bz.binomial(4, R)
+        assert all(sympy.expand(x - y) == 0 for x, y in zip(general[R], direct))
+    return reconstructed("(4) simplifies to", "(6) simplifies to", "it is the Bézier-point formula (6) that simplifies; checked symbolically for l = m = 2")
+
+
+@claim(doc="lasser", section="III", ref="Statement 1 proof: sum equivalence", statement="sum_{|I|=R} F(u_I^l, v_I^m) = sum_a C(l,a) C(n,R-a) F_a for v0 = v1 = v*")
+def counting_identity():
+    for l, m in itertools.product(range(5), range(5)):
+        for R in range(l + m + 1):
+            counts = {}
+            for iu, iv in multi_indices(l, m, 1, R):
+                counts[sum(iu)] = counts.get(sum(iu), 0) + 1
+            assert all(counts.get(a, 0) == bz.binomial(l, a) * bz.binomial(m, R - a) for a in range(l + 1))
+    return reconstructed(
+        "sum_a binom(l, a) binom(n, R - a) F_a",
+        "sum_a binom(l, a) binom(m, R - a) F_a  (n is undefined here; the v-indices number m)",
+        "counting the multi-indices with |I^u| = a, |I^v| = R - a for l, m <= 4",
+    )
+
+
+@claim(doc="lasser", section="III", ref="(9), (10)", statement="for an isoparametric line F(K(t)) = sum_R B_R B^{l+m}_R(t), B_R = sum_a C(l,a) C(m,R-a)/C(l+m,R) F_a")
+def eq9_10():
+    for l, m in [(1, 1), (2, 1), (2, 2), (3, 2)]:
+        net, curve, (u0, u1, s) = _iso_symbolic(l, m)
+        general = compose_homogeneous_lasser(net, curve)[:, 0]
+        F = [_F_a(net, u0, u1, s, a)[0] for a in range(l + 1)]
+        for R in range(l + m + 1):
+            formula = sum(sympy.Rational(bz.binomial(l, a) * bz.binomial(m, R - a), bz.binomial(l + m, R)) * F[a] for a in range(l + 1))
+            assert sympy.expand(general[R] - formula) == 0
+    return verified("symbolic F_ij, u0, u1, v*; (l, m) in (1,1), (2,1), (2,2), (3,2)")
+
+
+@claim(doc="lasser", section="III", ref="(11)", statement="Delta^{l+i} B_R = 0 for i = 1..m, R = 0..m-i")
+def eq11():
+    for l, m in [(1, 1), (1, 2), (2, 2), (3, 1), (2, 3)]:
+        net, curve, _ = _iso_symbolic(l, m)
+        B = compose_homogeneous_lasser(net, curve)[:, 0]
+        for i in range(1, m + 1):
+            for R in range(m - i + 1):
+                k = l + i
+                diff = sum((-1) ** j * sympy.binomial(k, j) * B[R + k - j] for j in range(k + 1))
+                assert sympy.expand(diff) == 0
+    return verified("symbolic, (l, m) in (1,1), (1,2), (2,2), (3,1), (2,3): the forward differences of order > l vanish")
+
+
+@claim(doc="lasser", section="III", ref="(12)", statement="B_R = sum_{a=R-m, a>0}^{R} C(l,a) C(m,R-a)/C(l+m,R) F_a is the degree raising formula")
+def eq12():
+    t = sympy.Symbol("t")
+
+    def bern(n, i):
+        return sympy.binomial(n, i) * t**i * (1 - t) ** (n - i)
+
+    for l, m in [(1, 1), (2, 1), (2, 3), (3, 2)]:
+        F = [sympy.Symbol(f"F{a}") for a in range(l + 1)]
+        curve = sum(F[a] * bern(l, a) for a in range(l + 1))
+        B = []
+        for R in range(l + m + 1):
+            lo = max(0, R - m)
+            B.append(sum(sympy.Rational(bz.binomial(l, a) * bz.binomial(m, R - a), bz.binomial(l + m, R)) * F[a] for a in range(lo, min(R, l) + 1)))
+        assert sympy.expand(sum(B[R] * bern(l + m, R) for R in range(l + m + 1)) - curve) == 0
+        printed0 = sum((F[a] for a in range(1, min(0, l) + 1)), sympy.Integer(0))  # R = 0 with a > 0: an empty sum
+        assert sympy.expand(printed0 - B[0]) != 0
+    return reconstructed(
+        "sum from a = R - m, a > 0",
+        "sum from a = max(0, R - m) to min(R, l)  (a >= 0, as printed in (17))",
+        "with a > 0 the sum for R = 0 is empty (B_0 = 0 != F_0); with a >= 0 it is the degree elevation l -> l + m (symbolic)",
+    )
+
+
+@claim(doc="lasser", section="III", ref="Statement 1", statement="in case of isoparametric lines Theorem 1 yields degree raised Bézier curves")
+def statement1():
+    rng = random.Random(11)
+    for l, m, N in itertools.product(range(4), range(4), range(1, 4)):
+        if l + m == 0:
+            continue
+        surface, _ = random_instance(rng, l, m, 1, False, False)
+        fixed = Fr(rng.randint(0, 8), 8)
+        free = [Fr(rng.randint(0, 8), 8) for _ in range(N + 1)]
+        if len(set(free)) == 1:
+            free[-1] = 1 - free[0] if free[0] != Fr(1, 2) else Fr(0)
+        for direction in ("u", "v"):
+            pts = [[x, fixed] if direction == "v" else [fixed, x] for x in free]
+            curve = BezierCurve(pts)
+            short, general = compose(surface, curve), compose(surface, curve, shortcut=False)
+            assert general == short.elevate(general.degree - short.degree)
+            assert short.degree == N * (l if direction == "v" else m)
+    return verified_range(
+        "l, m <= 3, 1 <= N <= 3 (random exact nets, u- and v-lines)",
+        "the Theorem-1 net equals the iso curve (degree l N or m N) elevated by N m (or N l) exactly; the paper's N = 1 case is included",
+    )
+
+
+@claim(doc="lasser", section="IV", ref="section IV strategy", statement="B_R = F(u*^l, v^m_{I^v}), where |I^u| = R, for a v parameter line u0 = u1 = u*")
+def section4_index():
+    surface = BezierSurface([[[i, j, (i * j) % 3] for j in range(4)] for i in range(3)])
+    curve = BezierCurve([["1/3", "1/5"], ["1/3", "4/5"]])
+    iso = surface.iso_u("1/3").reparametrize("1/5", "4/5")
+    assert compose(surface, curve) == iso
+    return reconstructed("where |I^u| = R", "where |I^v| = R", "for a v-parameter line the R-th point uses R of the m v-arguments equal to v_1; exact check on a (2, 3) patch")
+
+
+@claim(doc="lasser", section="IV", ref="section IV strategy", statement="otherwise (not N = 1 isoparametric) F(K(t)) is of degree N(l+m)")
+def section4_degree():
+    surface = BezierSurface([[[i, j, (i * i + 3 * j + i * j) % 5] for j in range(4)] for i in range(4)])  # bicubic
+    iso2 = BezierCurve([["1/10", "1/2"], ["9/10", "1/2"], ["1/5", "1/2"]])  # N = 2, isoparametric
+    mixed = BezierCurve([["1/10", "1/10"], ["1/2", "9/10"], ["9/10", "1/10"]])  # u linear, v quadratic; not degree raised
+    assert mixed.true_degree() == 2 and iso2.true_degree() == 2
+    a = compose(surface, iso2, shortcut=False)
+    b = compose(surface, mixed)
+    assert (a.degree, a.true_degree()) == (12, 6)
+    assert (b.degree, b.true_degree()) == (12, 9)
+    return erratum(
+        "Otherwise, F(K(t)) is of degree N(l+m)",
+        "F(K(t)) has degree <= N(l+m) (the stored degree of Theorem 1); for a polynomial K the true degree is at most "
+        "l deg u(t) + m deg v(t), e.g. l N for an isoparametric K of any degree N",
+        "bicubic patch: a quadratic u-line gives true degree 6 (not 12); the quadratic K = (u, v) with u(t) linear and "
+        "v(t) quadratic (not degree raised) gives true degree 3*1 + 3*2 = 9 (exact reduction)",
+    )
+
+
+@claim(doc="lasser", section="V", ref="Statement 2, (17), (18)", statement="for isoparametric lines Theorem 2 yields degree raised rational Bézier curves")
+def statement2():
+    for l, m in [(1, 1), (2, 1), (2, 2)]:
+        net, curve, (u0, u1, s) = _iso_symbolic(l, m, rational=True)
+        general = compose_homogeneous_lasser(net, curve)
+        Fa = [_F_a(net, u0, u1, s, a) for a in range(l + 1)]  # (omega_a F_a, omega_a)
+        for R in range(l + m + 1):
+            lo = max(0, R - m)
+            for k in range(2):
+                formula = sum(sympy.Rational(bz.binomial(l, a) * bz.binomial(m, R - a), bz.binomial(l + m, R)) * Fa[a][k] for a in range(lo, min(R, l) + 1))
+                assert sympy.expand(general[R][k] - formula) == 0
+    # beta_0 != beta_1: the Theorem-2 net is the iso net times W^m, not an elevation
+    surface = BezierSurface([[[i, j, i * j] for j in range(3)] for i in range(3)], [[1, 2, 1], [3, 1, 2], [1, 1, 4]])
+    curve = BezierCurve([["1/4", "1/3"], ["3/4", "1/3"]], weights=[1, 3])
+    general = compose(surface, curve, shortcut=False)
+    short = compose(surface, curve)
+    w = curve.homogeneous()[:, 2:3]
+    assert np.all(general.homogeneous() == bz.product(short.homogeneous(), bz.product(w, w)))
+    assert general.true_degree() == 2 and general.homogeneous().tolist() != bz.elevate(short.homogeneous(), 2).tolist()
+    return verified(
+        "(17), (18) symbolic for (l, m) in (1,1), (2,1), (2,2) with beta_0 = beta_1 = 1 (as the proof assumes): the degree "
+        "elevation of the homogeneous points (omega_a F_a, omega_a). For beta_0 != beta_1 the Theorem-2 net is the iso "
+        "net times W(t)^m (a common factor, removed by exact gcd reduction), not a degree elevation"
+    )
+
+
+@claim(doc="lasser", section="VI", ref="section VI strategy", statement="for N = 1 isoparametric K: weights Omega_R = omega(u_{I^u}^l, v*^m), Omega_R B_R = (omega F)(u_{I^u}^l, v*^m), |I^u| = R")
+def section6_weights():
+    surface = BezierSurface([[[i, j, i * j] for j in range(3)] for i in range(3)], [[1, 2, 1], [3, 1, 2], [1, 1, 4]])
+    curve = BezierCurve([["1/4", "1/3"], ["3/4", "1/3"]], weights=[1, 3])
+    true = compose(surface, curve)
+    corrected = BezierCurve.from_homogeneous(statement1_points(surface.homogeneous(), curve.homogeneous()))
+    assert corrected == true
+    unit = BezierCurve([["1/4", "1/3"], ["3/4", "1/3"]])
+    printed = BezierCurve.from_homogeneous(statement1_points(surface.homogeneous(), unit.homogeneous()))
+    assert not printed.same_curve(true)
+    return erratum(
+        "Omega_R = omega^{l,m}_{0,0}(u_{I^u}^l, v*^m) (the beta_I of K do not appear; 'w.l.o.g. beta_0 = beta_N = 1')",
+        "Omega_R B_R = beta_0^(l-R) beta_1^R (omega F)(u_0^(l-R), u_1^R, v*^m), Omega_R likewise",
+        "normalizing beta_0 = beta_1 = 1 is a Möbius reparametrization of K: the printed net is the same point set but not "
+        "F(K(t)) (exact comparison for beta = (1, 3) on a rational biquadratic); with the beta factors it equals F(K(t))",
+    )

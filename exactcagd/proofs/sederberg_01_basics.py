@@ -1,0 +1,221 @@
+"""Ledger: Sederberg's notes, chapter 1 (vectors, rotation about an axis, lines, conics).
+
+Every worked example of the chapter is recomputed with :mod:`exactcagd.toolbox.basics`
+and every general formula is checked symbolically with sympy.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import sympy as sp
+from gmpy2 import mpq
+
+from exactcagd.toolbox import basics as b
+from exactcagd.proofs._ledger import claim, erratum, verified, verified_range
+
+
+def _R(x):
+    return x.to_sympy() if hasattr(x, "to_sympy") else sp.Rational(int(x.numerator), int(x.denominator))
+
+
+@claim(doc="sederberg", section="1.2", ref="(1.2), (1.3)", statement="P1.P2 = x1x2 + y1y2 + z1z2; P1 x P2 = (y1z2 - y2z1, x2z1 - x1z2, x1y2 - x2y1)")
+def dot_and_cross():
+    u, v = sp.Matrix(sp.symbols("x1 y1 z1")), sp.Matrix(sp.symbols("x2 y2 z2"))
+    x1, y1, z1 = u
+    x2, y2, z2 = v
+    assert u.cross(v) == sp.Matrix([y1 * z2 - y2 * z1, x2 * z1 - x1 * z2, x1 * y2 - x2 * y1])
+    assert b.cross((1, 2, 3), (4, 5, 6)) == (-3, 6, -3) and b.dot((1, 2, 3), (4, 5, 6)) == 32
+    return verified("sympy cross product equals (1.3) componentwise; exact dot/cross on a sample")
+
+
+@claim(doc="sederberg", section="1.2", ref="Example (angle)", statement="angle between (1,2,4) and (3,-4,2): cos^-1(3/(sqrt21 sqrt29)) ~ 83.02 deg")
+def angle_example():
+    c = b.cos_angle((1, 2, 4), (3, -4, 2))
+    assert sp.simplify(_R(c) - 3 / (sp.sqrt(21) * sp.sqrt(29))) == 0
+    deg = float(b.angle((1, 2, 4), (3, -4, 2)).evalf(30)) * 180 / float(sp.pi.evalf(30))
+    assert abs(deg - 83.02) < 0.005
+    assert b.length_squared((-3, -4, 2)) == b.length_squared((3, -4, 2))
+    return erratum(
+        printed="|(1,2,4)||(-3,-4,2)| in the denominator",
+        corrected="|(1,2,4)||(3,-4,2)|",
+        detail=f"typo in the sign of one component; both norms are sqrt(29), so the result 3/(sqrt21 sqrt29) = {c} "
+        f"and theta = {deg:.4f} deg hold exactly",
+    )
+
+
+@claim(doc="sederberg", section="1.2", ref="Example (projection)", statement="projection of (3,2,1) onto (3,6,6) is 27/81 (3,6,6) = (1,2,2)")
+def projection_example():
+    assert b.dot((3, 2, 1), (3, 6, 6)) == 27 and b.dot((3, 6, 6), (3, 6, 6)) == 81
+    assert b.project((3, 2, 1), (3, 6, 6)) == (1, 2, 2)
+    return verified("exact projection (P.Q / Q.Q) Q")
+
+
+@claim(doc="sederberg", section="1.2", ref="(1.4) Example", statement="triangle (1,1,1),(2,4,5),(3,2,6): (1,3,4)x(2,1,5) = (11,3,-5), Area = sqrt(155)/2 ~ 6.225")
+def triangle_example():
+    p1, p2, p3 = (1, 1, 1), (2, 4, 5), (3, 2, 6)
+    assert b.relative(p2, p1) == (1, 3, 4) and b.relative(p3, p1) == (2, 1, 5)
+    assert b.cross((1, 3, 4), (2, 1, 5)) == (11, 3, -5)
+    area = b.triangle_area(p1, p2, p3)
+    assert sp.simplify(_R(area) - sp.sqrt(155) / 2) == 0 and abs(float(area) - 6.225) < 5e-4
+    return verified(f"exact area {area} = {float(area):.6f}")
+
+
+@claim(doc="sederberg", section="1.1", ref="Heron's formula", statement="Area = sqrt(s(s-l1)(s-l2)(s-l3)), s = (l1+l2+l3)/2")
+def heron_formula():
+    l1, l2, l3 = sp.symbols("l1 l2 l3", positive=True)
+    s = (l1 + l2 + l3) / 2
+    heron2 = sp.expand(s * (s - l1) * (s - l2) * (s - l3))
+    squared_form = (4 * l1**2 * l2**2 - (l1**2 + l2**2 - l3**2) ** 2) / 16
+    assert sp.expand(heron2 - squared_form) == 0
+    # and against the cross-product area (1.4) on the example triangle
+    sq = [b.length_squared(b.relative(x, y)) for x, y in (((2, 4, 5), (1, 1, 1)), ((3, 2, 6), (2, 4, 5)), ((1, 1, 1), (3, 2, 6)))]
+    assert b.heron_area_squared(*sq) == b.triangle_area_squared((1, 1, 1), (2, 4, 5), (3, 2, 6)) == mpq(155, 4)
+    return verified("Heron's product expands to (4 a^2 b^2 - (a^2 + b^2 - c^2)^2)/16; equals (1.4) on the example")
+
+
+def _trace_rotation():
+    from exactcagd.exact.scalars import rational_str
+
+    def fmt(v):
+        return "(" + ", ".join(rational_str(x) for x in v) + ")"
+
+    p, base, d = (5, 7, 3), (1, 1, 1), (2, 1, 2)
+    n = tuple(x / 3 for x in b.vec(d))
+    print("n =", fmt(n))
+    k = b.dot(b.relative(p, base), n)
+    C = tuple(bi + k * ni for bi, ni in zip(b.vec(base), n))
+    print("C = B + [(P - B).n] n =", fmt(C))
+    u = b.relative(p, C)
+    print("u = P - C =", fmt(u))
+    v = b.cross(n, u)
+    print("v = n x u =", fmt(v))
+    print("r = u cos 90 + v sin 90 = v;  P' = C + r =", fmt(b.rotate_about_axis(p, base, d, 0, 1)))
+
+
+@claim(doc="sederberg", section="1.3", ref="Example (1.10)", statement="rotate (5,7,3) by 90 deg about axis (2,1,2) through (1,1,1): C = (5,3,5), u = (0,4,-2), v = (-10/3,4/3,8/3), r = v",
+       trace=_trace_rotation)
+def rotation_example():
+    n = (mpq(2, 3), mpq(1, 3), mpq(2, 3))
+    C = tuple(bi + 6 * ni for bi, ni in zip((1, 1, 1), n))
+    assert b.dot(b.relative((5, 7, 3), (1, 1, 1)), n) == 6 and C == (5, 3, 5)
+    u = b.relative((5, 7, 3), C)
+    assert u == (0, 4, -2)
+    assert b.cross(n, u) == (mpq(-10, 3), mpq(4, 3), mpq(8, 3))
+    result = b.rotate_about_axis((5, 7, 3), (1, 1, 1), (2, 1, 2), 0, 1)
+    ref = b.rotate_about_axis_sympy((5, 7, 3), (1, 1, 1), (2, 1, 2), sp.pi / 2)
+    assert tuple(_R(x) for x in result) == ref == (sp.Rational(5, 3), sp.Rational(13, 3), sp.Rational(23, 3))
+    return verified(f"all printed intermediates reproduced; P' = C + r = {tuple(str(x) for x in result)} (not printed), equal to the sympy rotation")
+
+
+@claim(doc="sederberg", section="1.3", ref="after (1.8)", statement="Then, r is computed using equation (3.1)")
+def rotation_cross_reference():
+    # (1.5) is r = u cos + v sin; equation (3.1) of the notes is Horner's rule
+    u, v = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0])
+    th = sp.Symbol("theta")
+    r = u * sp.cos(th) + v * sp.sin(th)
+    assert sp.simplify(r.dot(r)) == 1 and sp.simplify(r.dot(u) - sp.cos(th)) == 0
+    return erratum(printed="equation (3.1)", corrected="equation (1.5): r = u cos(theta) + v sin(theta)",
+                   detail="(3.1) in chapter 3 is Horner's algorithm; the rotation step is (1.5), checked: |r| = |u|, r.u = cos theta")
+
+
+@claim(doc="sederberg", section="1.3.1", ref="(1.11)-(1.27)", statement="4x4 matrix M of the rotation about an arbitrary axis, with T1, T2, T3")
+def rotation_matrix_form():
+    x, y, z, Bx, By, Bz, cth, sth = sp.symbols("x y z B_x B_y B_z cos_theta sin_theta", real=True)
+    a, c_ = sp.symbols("alpha beta", real=True)
+    # a unit vector n, parametrized rationally by the inverse stereographic projection
+    den = 1 + a**2 + c_**2
+    nx, ny, nz = 2 * a / den, 2 * c_ / den, (1 - a**2 - c_**2) / den
+    n = sp.Matrix([nx, ny, nz])
+    P, B = sp.Matrix([x, y, z]), sp.Matrix([Bx, By, Bz])
+    C = B + (P - B).dot(n) * n
+    u = P - C
+    v = n.cross(u)
+    vec_form = C + u * cth + v * sth  # cos, sin enter linearly: independent symbols suffice
+    Bn = B.dot(n)
+    M = sp.Matrix([
+        [nx**2 + (ny**2 + nz**2) * cth, nx * ny * (1 - cth) - nz * sth, nx * nz * (1 - cth) + ny * sth, (Bx - Bn * nx) * (1 - cth) + (nz * By - ny * Bz) * sth],
+        [nx * ny * (1 - cth) + nz * sth, ny**2 + (nx**2 + nz**2) * cth, ny * nz * (1 - cth) - nx * sth, (By - Bn * ny) * (1 - cth) + (nx * Bz - nz * Bx) * sth],
+        [nx * nz * (1 - cth) - ny * sth, ny * nz * (1 - cth) + nx * sth, nz**2 + (nx**2 + ny**2) * cth, (Bz - Bn * nz) * (1 - cth) + (ny * Bx - nx * By) * sth],
+    ])
+    mat_form = M * sp.Matrix([x, y, z, 1])
+    assert all(sp.cancel(e) == 0 for e in (mat_form - vec_form))
+    # (1.16): u_x = x(1 - nx^2) - y nx ny - z nx nz + (B.n) nx - B_x
+    assert sp.cancel(u[0] - (x * (1 - nx**2) - y * nx * ny - z * nx * nz + Bn * nx - Bx)) == 0
+    return verified("M (x,y,z,1)^T equals C + u cos + v sin identically for every unit n (rational parametrization of the sphere) and symbolic B, theta")
+
+
+@claim(doc="sederberg", section="1.5.1", ref="(1.35), Fig. 1.8.b", statement="with P0 at t0 = 1 and P1 at t1 = 4, t = 2 is one third of the way from P0 to P1")
+def affine_line_example():
+    p = b.affine_point((0, 0), 1, (3, 6), 4, 2)
+    assert p == (1, 2)
+    g, a_, be = sp.symbols("gamma alpha beta")
+    Pa, Pb = sp.symbols("P_a P_b")
+    assert sp.simplify(Pa + (g - a_) / (be - a_) * (Pb - Pa) - ((be - g) * Pa + (g - a_) * Pb) / (be - a_)) == 0
+    return verified("P(2) = P0 + (P1 - P0)/3; the two forms of P(gamma) agree symbolically")
+
+
+@claim(doc="sederberg", section="1.5.2", ref="line through two points", statement="|X Y W; X1 Y1 W1; X2 Y2 W2| = (Y1W2 - Y2W1) X + (X2W1 - X1W2) Y + (X1Y2 - X2Y1) W")
+def line_determinant():
+    X, Y, W, X1, Y1, W1, X2, Y2, W2 = sp.symbols("X Y W X1 Y1 W1 X2 Y2 W2")
+    det = sp.Matrix([[X, Y, W], [X1, Y1, W1], [X2, Y2, W2]]).det()
+    assert sp.expand(det - ((Y1 * W2 - Y2 * W1) * X + (X2 * W1 - X1 * W2) * Y + (X1 * Y2 - X2 * Y1) * W)) == 0
+    line = b.line_through((1, 2, 1), (3, 1, 2))
+    assert line((1, 2)) == 0 and line((mpq(3, 2), mpq(1, 2))) == 0
+    return verified("cofactor expansion equals the printed line; exact line_through on homogeneous points")
+
+
+@claim(doc="sederberg", section="1.5.3", ref="normalized line", statement="with a'^2 + b'^2 = 1, f(x,y) is the signed distance of (x,y) to the line; |c'| is the distance of the origin")
+def normalized_line_distance():
+    a_, b_, c_, x, y = sp.symbols("a b c x y", real=True)
+    # foot of the perpendicular: (x, y) - f/(a^2 + b^2) (a, b)
+    f = a_ * x + b_ * y + c_
+    fx, fy = x - f / (a_**2 + b_**2) * a_, y - f / (a_**2 + b_**2) * b_
+    assert sp.simplify(a_ * fx + b_ * fy + c_) == 0
+    dist2 = sp.simplify((x - fx) ** 2 + (y - fy) ** 2)
+    assert sp.simplify(dist2 - f**2 / (a_**2 + b_**2)) == 0
+    line = b.Line(3, 4, -10)
+    assert b.signed_distance((0, 0), line) == -2 and b.distance_squared_to_line((3, 4), line) == 225 / mpq(25)
+    return verified("squared distance to the foot point is f^2/(a^2+b^2) symbolically")
+
+
+@claim(doc="sederberg", section="1.6", ref="discriminant", statement="b^2 - 4ac > 0: hyperbola (two real points at infinity), = 0: parabola, < 0: ellipse")
+def conic_discriminant():
+    X, Y = sp.symbols("X Y")
+    count = 0
+    for a_, b_, c_ in itertools.product(range(-3, 4), repeat=3):
+        if a_ == b_ == c_ == 0:
+            continue
+        form = a_ * X**2 + b_ * X * Y + c_ * Y**2
+        # real points of aX^2 + bXY + cY^2 = 0 on the projective line, counted with multiplicity
+        roots = sp.Poly(form.subs(Y, 1), X).real_roots() if sp.Poly(form.subs(Y, 1), X).degree() > 0 else []
+        at_y0 = 2 - sp.Poly(form.subs(Y, 1), X).degree() if a_ == 0 else 0  # roots at X/Y = infinity
+        real = len(roots) + at_y0
+        distinct = len(set(roots)) + (1 if at_y0 else 0)
+        kind = b.classify_conic((a_, b_, c_, 1, 1, 1)).split()[-1]
+        expected = "hyperbola" if (real == 2 and distinct == 2) else ("parabola" if real == 2 else "ellipse")
+        assert kind == expected, (a_, b_, c_)
+        count += 1
+    return verified_range("all (a, b, c) in [-3, 3]^3", f"{count} quadratic parts: real points at infinity counted by sympy agree with the discriminant rule")
+
+
+@claim(doc="sederberg", section="1.6.1", ref="parametric discriminant", statement="d1^2 - 4 d0 d2 > 0: hyperbola, < 0: ellipse, = 0: parabola")
+def parametric_conic_discriminant():
+    import random
+
+    rng = random.Random(6)
+    checked = 0
+    for _ in range(150):
+        X, Y, W = ([rng.randint(-3, 3) for _ in range(3)] for _ in range(3))
+        con = b.implicitize_conic(X, Y, W)
+        if con is None or con.a == con.b == con.c == 0:
+            continue
+        if b.classify_conic(con).startswith("degenerate"):
+            continue
+        d0, d1, d2 = W
+        disc = d1 * d1 - 4 * d0 * d2
+        expected = "hyperbola" if disc > 0 else ("parabola" if disc == 0 else "ellipse")
+        assert b.classify_conic(con) == expected
+        checked += 1
+    return verified_range("150 random integer parametrizations with entries in [-3, 3]",
+                          f"{checked} non-degenerate conics: implicitized exactly, implicit and parametric discriminants agree")

@@ -1,0 +1,530 @@
+"""Ledger: Sederberg's notes chapter 6 beyond the foundation (6.5, 6.6, 6.9-6.14).
+
+The foundation's worked examples (polar form, knot insertion, de Boor, Bézier
+extraction) are in ``sederberg_06_bsplines.py``; this module checks periodic
+B-splines, end conditions, Greville abscissae, hodographs, symmetric polynomials,
+combining Bézier curves (6.12), knot intervals (6.13) and basis functions (6.14).
+"""
+
+from __future__ import annotations
+
+import random
+
+import numpy as np
+import sympy as sp
+from gmpy2 import mpq
+
+from exactcagd.exact import bernstein as bz
+from exactcagd.geometry.bezier_curve import BezierCurve
+from exactcagd.toolbox import bspline_extras as bx
+from exactcagd.toolbox import knot_intervals as ki
+from exactcagd.proofs._ledger import claim, erratum, not_checkable, verified, verified_range
+
+T = sp.Symbol("t")
+
+
+def _rng(seed):
+    return random.Random(seed)
+
+
+def _pts(rng, n, dim=2, lo=-9, hi=9):
+    return [[mpq(rng.randint(lo, hi), rng.randint(1, 3)) for _ in range(dim)] for _ in range(n)]
+
+
+def _R(x):
+    return sp.Rational(int(x.numerator), int(x.denominator))
+
+
+def _is_zero(expr, symbols) -> bool:
+    """Exact identity test of a rational function (sympy's sparse fraction field: fast)."""
+    return sp.QQ.frac_field(*symbols).from_sympy(expr) == 0
+
+
+def _cox_sym(i, p, knots, t, span):
+    """Cox-de Boor piece on ``span`` (sympy, independent of exactcagd)."""
+    if p == 0:
+        return sp.Integer(1) if (knots[i] == span[0] and knots[i + 1] == span[1]) else sp.Integer(0)
+    out = sp.Integer(0)
+    if knots[i + p] != knots[i]:
+        out += (t - knots[i]) / (knots[i + p] - knots[i]) * _cox_sym(i, p - 1, knots, t, span)
+    if knots[i + p + 1] != knots[i + 1]:
+        out += (knots[i + p + 1] - t) / (knots[i + p + 1] - knots[i + 1]) * _cox_sym(i + 1, p - 1, knots, t, span)
+    return sp.expand(out)
+
+
+# ---------------------------------------------------------------------------- 6.5, 6.6, 6.9, 6.10
+@claim(doc="sederberg", section="6.5", ref="periodic B-splines",
+       statement="a B-spline whose first n control points equal the last n and whose first n knot intervals equal the last n closes on itself")
+def periodic_closes():
+    rng = _rng(65)
+    count = 0
+    for p in (1, 2, 3, 4):
+        for _ in range(3):
+            n = rng.randint(p + 1, p + 4)
+            d = [mpq(rng.randint(1, 4)) for _ in range(n)]
+            c = bx.periodic_bspline(_pts(rng, n), p, d)
+            pieces = c.to_bezier()
+            (a0, b0), first = pieces[0]
+            (a1, b1), last = pieces[-1]
+            order = bx.continuity_order(last, first, b1 - a1, b0 - a0, max_order=p)
+            assert order >= p - 1, (p, order)
+            count += 1
+    return verified_range("degrees 1..4, 12 random closed curves", "closed with C^{p-1} at the seam (exact Bézier pieces)")
+
+
+@claim(doc="sederberg", section="6.6", ref="Bézier end conditions",
+       statement="with an n-fold knot at each end the curve interpolates the end control points and is tangent to the control polygon there")
+def end_conditions():
+    rng = _rng(66)
+    for p in (2, 3, 4):
+        n = p + 3
+        knots = sorted(mpq(rng.randint(0, 20)) for _ in range(n + p + 1))
+        knots = [k + i * mpq(1, 100) for i, k in enumerate(knots)]  # strictly increasing
+        c = bx.SplineCurve(_pts(rng, n), knots)
+        clamped = c.clamp()
+        lo, hi = clamped.domain
+        P = clamped.control_points
+        assert clamped.evaluate(lo) == P[0] and clamped.evaluate(hi) == P[-1]
+        first = clamped.to_bezier()[0][1]
+        assert first.control_points[:2] == P[:2]  # "already in Bézier form"
+        for t in (lo, lo + (hi - lo) / 3, hi):
+            assert clamped.evaluate(t) == c.evaluate(t)
+    return verified_range("degrees 2..4", "clamping by polar form keeps the curve; end points interpolated, first legs are Bézier legs")
+
+
+@claim(doc="sederberg", section="6.9", ref="(6.1)",
+       statement="x_i = (t_i + ... + t_{i+n-1})/n (Greville abscissae) make x(t) = t")
+def greville():
+    rng = _rng(69)
+    for p in (1, 2, 3, 5):
+        n = p + 4
+        knots = [mpq(0)] * (p + 1) + sorted(mpq(rng.randint(1, 30), 3) for _ in range(n - p - 1)) + [mpq(11)] * (p + 1)
+        c = bx.SplineCurve([[0]] * n, knots)
+        g = c.greville()
+        ex = bx.SplineCurve([[x] for x in g], knots)
+        for t in [mpq(k, 7) * 11 for k in range(8)]:
+            assert ex.evaluate(t) == (t,)
+    return verified_range("degrees 1, 2, 3, 5", "explicit B-spline with Greville x-coordinates reproduces x(t) = t exactly")
+
+
+@claim(doc="sederberg", section="6.10", ref="(6.2)",
+       statement="H_i = n (P_{i+1} - P_i)/(t_{i+n} - t_i), same knots without the first and last")
+def hodograph():
+    rng = _rng(610)
+    for p in (2, 3, 4):
+        n = p + 3
+        knots = [mpq(i) + mpq(rng.randint(0, 2), 5) * (i % 2) for i in range(n + p + 1)]
+        c = bx.SplineCurve(_pts(rng, n), knots)
+        h = c.derivative()
+        for (a, b), piece in c.to_sympy():
+            for (a2, b2), hp in h.to_sympy():
+                if (a2, b2) == (a, b):
+                    assert sp.simplify(piece.diff(T) - hp) == sp.zeros(2, 1)
+    return verified_range("degrees 2..4, unclamped knots", "hodograph pieces equal sympy derivatives (notes' knot convention = standard minus the outer knots)")
+
+
+# ---------------------------------------------------------------------------- 6.11
+@claim(doc="sederberg", section="6.11", ref="symmetric polynomials p_i",
+       statement="p_0 = 1, p_i = sum_j t_j p_{i-1}[...without t_j...]/n; examples for n = 1..4")
+def symmetric_examples():
+    ts = sp.symbols("t1:5")
+    for n in range(1, 5):
+        args = list(ts[:n])
+        for i in range(n + 1):
+            got = sp.expand(bx.symmetric_basis(i, args))
+            e_i = sum(sp.Mul(*c) for c in __import__("itertools").combinations(args, i)) if i else sp.Integer(1)
+            assert sp.expand(got - e_i / sp.binomial(n, i)) == 0
+    t1, t2, t3, t4 = ts
+    printed4 = [(t1 + t2 + t3 + t4) / 4, (t1 * t2 + t1 * t3 + t1 * t4 + t2 * t3 + t2 * t4 + t3 * t4) / 6,
+                (t1 * t2 * t3 + t1 * t2 * t4 + t1 * t3 * t4 + t2 * t3 * t4) / 4, t1 * t2 * t3 * t4]
+    for i, expr in enumerate(printed4, start=1):
+        assert sp.expand(bx.symmetric_basis(i, [t1, t2, t3, t4]) - expr) == 0
+    return verified("the recursion gives e_i / C(n, i); the printed n = 1..4 forms agree symbolically")
+
+
+@claim(doc="sederberg", section="6.11", ref="Example (polar form)",
+       statement="p(t) = t^3 + 6t^2 + 3t + 1: p[t1,t2,t3] = 1 + 3(t1+t2+t3)/3 + 6(t1t2+t1t3+t2t3)/3 + t1t2t3; b = 1, 2, 5, 11")
+def polar_example():
+    t1, t2, t3 = sp.symbols("t1 t2 t3")
+    printed = 1 + 3 * (t1 + t2 + t3) / 3 + 6 * (t1 * t2 + t1 * t3 + t2 * t3) / 3 + t1 * t2 * t3
+    coeffs = bx.polar_form_power([1, 3, 6, 1])
+    mine = sum(_R(c) * bx.symmetric_basis(i, [t1, t2, t3]) for i, c in enumerate(coeffs))
+    assert sp.expand(mine - printed) == 0
+    assert sp.expand(printed.subs({t1: T, t2: T, t3: T}) - (T**3 + 6 * T**2 + 3 * T + 1)) == 0
+    b = [bx.polar_form_value([1, 3, 6, 1], x) for x in ([0, 0, 0], [0, 0, 1], [0, 1, 1], [1, 1, 1])]
+    assert b == [1, 2, 5, 11]
+    assert list(bz.from_power(bz.as_coefficients([1, 3, 6, 1]))) == b  # foundation's basis conversion
+    return verified("polar form, diagonal and Bernstein coefficients 1, 2, 5, 11 (also by the foundation's from_power)")
+
+
+@claim(doc="sederberg", section="6.11", ref="Theorem",
+       statement="b_i = p[a,...,a (n-i), b,...,b (i)] are the degree-n Bernstein coefficients of p over [a, b]")
+def polar_theorem():
+    rng = _rng(611)
+    for n in range(1, 7):
+        for _ in range(3):
+            m = rng.randint(0, n)
+            a_pow = [mpq(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(m + 1)]
+            a, b = mpq(rng.randint(-5, 2)), mpq(rng.randint(3, 8))
+            coeffs = [bx.polar_form_value(a_pow, [a] * (n - i) + [b] * i) for i in range(n + 1)]
+            p = sum(_R(c) * T**k for k, c in enumerate(a_pow))
+            s = sp.Symbol("s")
+            ref = sp.expand(p.subs(T, _R(a) + s * (_R(b) - _R(a))))
+            mine = sp.expand(sum(_R(c) * sp.binomial(n, i) * s**i * (1 - s) ** (n - i) for i, c in enumerate(coeffs)))
+            assert sp.expand(ref - mine) == 0
+    return verified_range("n = 1..6, random polynomials of degree <= n and intervals", "against sympy substitution")
+
+
+# ---------------------------------------------------------------------------- 6.12
+def _c612(mult, seed=612):
+    """Spline with knots a,b,c,d (mult copies of d beyond one... ) and the notes' quantities."""
+    rng = _rng(seed + mult)
+    a, b, c, d, e = map(mpq, (0, 1, 3, 4, 6))
+    inner = [b, c] + [d] * mult
+    kn = [a] * 4 + inner + [e] * 4
+    S = bx.SplineCurve(_pts(rng, len(kn) - 4), kn)
+    left = S.rebase([a] * 4 + [b, c] + [d] * 4)
+    P = [np.array(x, dtype=object) for x in left.control_points]
+    full = S.rebase([a] * 4 + [b, c, d, d, d] + [e] * 4)
+    Q = [np.array(x, dtype=object) for x in full.control_points[-4:]]
+    return (a, b, c, d, e), P, Q
+
+
+@claim(doc="sederberg", section="6.12", ref="C^1 condition",
+       statement="|[P_n - P_{n-1}](k_{i+1} - k_i) - [Q_1 - P_n](e - k_{i+1})| < TOL gives C^1")
+def c1_condition():
+    for mult in (0, 1, 2, 3):  # continuity C^{3-mult} at d
+        (a, b, c, d, e), P, Q = _c612(mult)
+        printed = (P[-1] - P[-2]) * (d - c) - (Q[1] - P[-1]) * (e - d)
+        corrected = (P[-1] - P[-2]) * (e - d) - (Q[1] - P[-1]) * (d - c)
+        assert np.all(corrected == 0) == (mult < 3)
+        if mult < 3:
+            assert np.any(printed != 0)
+    return erratum(
+        printed="(P_n - P_{n-1})(k_{i+1} - k_i) = (Q_1 - P_n)(e - k_{i+1})",
+        corrected="(P_n - P_{n-1})(e - k_{i+1}) = (Q_1 - P_n)(k_{i+1} - k_i)",
+        detail="C^1 means f(k_{i+1}, k_{i+1}, x) is one affine map: (Q_1 - P_n)/(e - k_{i+1}) = (P_n - P_{n-1})/(k_{i+1} - k_i); "
+        "the printed form swaps the two interval lengths (fails on exact C^1, C^2, C^3 splines with unequal spans)",
+    )
+
+
+@claim(doc="sederberg", section="6.12", ref="C^2 condition",
+       statement="(P_{n-2} - Q_2)(k_{i+1}-k_{i-1})(k_{i+1}-e) + (P_{n-1} - P_{n-2})(e-k_{i-1})(k_{i+1}-e) + (Q_2 - Q_1)(k_i - e)(k_{i+1}-k_{i-1}) = 0")
+def c2_condition():
+    for mult in (0, 1, 2):
+        (a, b, c, d, e), P, Q = _c612(mult)
+        expr = (P[-3] - Q[2]) * (d - b) * (d - e) + (P[-2] - P[-3]) * (e - b) * (d - e) + (Q[2] - Q[1]) * (c - e) * (d - b)
+        assert np.all(expr == 0) == (mult <= 1)
+    return verified("vanishes exactly on C^3 and C^2 junctions, not on a C^1 junction (exact random splines)")
+
+
+@claim(doc="sederberg", section="6.12", ref="P_alpha",
+       statement="P_alpha = ((k_{i+1}-e)P_{n-2} + (e-k_{i-1})P_{n-1})/(k_{i+1}-k_{i-1}) = ((k_{i+1}-k_i)Q_2 + (e-k_{i+1})Q_1)/(e-k_i)")
+def p_alpha():
+    for mult in (0, 1):
+        (a, b, c, d, e), P, Q = _c612(mult)
+        first = ((d - e) * P[-3] + (e - b) * P[-2]) / (d - b)
+        second_printed = ((d - c) * Q[2] + (e - d) * Q[1]) / (e - c)
+        second = ((e - c) * Q[1] - (d - c) * Q[2]) / (e - d)
+        assert np.all(first == second) and np.any(first != second_printed)
+    return erratum(
+        printed="P_alpha = ((k_{i+1}-k_i) Q_2 + (e-k_{i+1}) Q_1)/(e-k_i)",
+        corrected="P_alpha = ((e-k_i) Q_1 - (k_{i+1}-k_i) Q_2)/(e-k_{i+1})",
+        detail="P_alpha = f(k_i, k_{i+1}, e) extrapolates the line f(k_{i+1}, e, x) through Q_1 (x = k_{i+1}) and Q_2 (x = e) to x = k_i; "
+        "the printed right-hand form interpolates instead. The first form is correct (checked on exact C^2 and C^3 splines).",
+    )
+
+
+@claim(doc="sederberg", section="6.12", ref="P_beta, P_gamma, C^3 condition",
+       statement="P_beta = ((e-k_{i-2})P_{n-2} + (k_{i-1}-e)P_{n-3})/(k_{i-1}-k_{i-2}); P_gamma = ((k_{i+1}-k_i)Q_3 + (k_i-e)Q_2)/(k_{i+1}-e); P_alpha = ((e-k_{i+1})P_beta + (k_{i+1}-k_{i-1})P_gamma)/(e-k_{i-1})")
+def p_beta_gamma():
+    a, b, c, d, e = map(mpq, (0, 1, 3, 4, 6))
+    rng = _rng(612)
+    kn = [a] * 4 + [b, c] + [e] * 4
+    base = bx.SplineCurve(_pts(rng, len(kn) - 4), kn)  # C^3 at d: d is a removable knot
+    P = [np.array(x, dtype=object) for x in base.rebase([a] * 4 + [b, c] + [d] * 4).control_points]
+    Q = [np.array(x, dtype=object) for x in base.rebase([a] * 4 + [b, c, d, d, d] + [e] * 4).control_points[-4:]]
+    coarse = [np.array(x, dtype=object) for x in base.control_points]  # ..., P_{n-3}, P_beta, P_gamma, Q_3
+    beta_printed = ((e - a) * P[-3] + (b - e) * P[-4]) / (b - a)
+    beta = ((d - e) * P[-4] + (e - a) * P[-3]) / (d - a)
+    gamma = ((d - c) * Q[3] + (c - e) * Q[2]) / (d - e)
+    alpha = ((d - e) * P[-3] + (e - b) * P[-2]) / (d - b)
+    assert np.all(beta == coarse[-3]) and np.all(gamma == coarse[-2]) and np.any(beta_printed != beta)
+    assert np.all(alpha == ((e - d) * beta + (d - b) * gamma) / (e - b))
+    assert np.any(alpha != ((e - d) * beta_printed + (d - b) * gamma) / (e - b))
+    return erratum(
+        printed="P_beta = ((e - k_{i-2}) P_{n-2} + (k_{i-1} - e) P_{n-3})/(k_{i-1} - k_{i-2})",
+        corrected="P_beta = ((k_{i+1} - e) P_{n-3} + (e - k_{i-2}) P_{n-2})/(k_{i+1} - k_{i-2})",
+        detail="P_beta = f(k_{i-1}, k_i, e) lies on the line f(k_{i-1}, k_i, x) through P_{n-3} (x = k_{i-2}) and P_{n-2} (x = k_{i+1}); "
+        "P_gamma and the C^3 condition are correct; with the corrected P_beta they reproduce the control points of the "
+        "spline with k_{i+1} removed exactly, with the printed P_beta the C^3 test fails on an exact C^3 junction",
+    )
+
+
+@claim(doc="sederberg", section="6.12", ref="table",
+       statement="a string of Bézier curves becomes one B-spline with knot multiplicity 4 - (order of continuity)")
+def chain_table():
+    rng = _rng(6120)
+    for mult in (1, 2, 3):
+        kn = [mpq(0)] * 4 + [mpq(1)] * mult + [mpq(3)] * 4
+        S = bx.SplineCurve(_pts(rng, len(kn) - 4), kn)
+        pieces = [pc for _, pc in S.to_bezier()]
+        # spans chosen by the (corrected) C^1 rule (1 and 2) where the junction is C^1; given for the C^0 one
+        out = bx.bezier_chain_to_bspline(pieces, spans=[1, 2] if mult == 3 else None)
+        assert list(out.knots) == kn, (mult, out.knots)
+    # C^3 pieces of a single cubic: the knot disappears
+    c = BezierCurve(_pts(rng, 4))
+    left, right = c.subdivide(mpq(1, 3))
+    out = bx.bezier_chain_to_bspline([left, right], spans=[1, 2])
+    assert out.knots == (0, 0, 0, 0, 3, 3, 3, 3)
+    return verified("C^0/C^1/C^2 junctions give multiplicity 3/2/1, a C^3 junction removes the knot; pieces reproduced exactly")
+
+
+# ---------------------------------------------------------------------------- 6.13
+_P = [[0, 0], [4, 0], [5, 3], [2, 5], [-1, 3], [-2, 1]]
+_D = [1, 2, 3, 1, 2, 1]
+
+
+@claim(doc="sederberg", section="6.13.2", ref="(6.3)", statement="interval halving for a non-uniform quadratic (generalized Chaikin)")
+def halving_quad():
+    c = ki.KnotIntervalCurve(_P, _D, 2)
+    q = ki.halving_quadratic(_P, _D)
+    assert np.all(np.roll(c.halve().points_array(), -1, axis=0) == q)
+    halves = [mpq(x, 2) for x in _D for _ in range(2)]
+    new = ki.KnotIntervalCurve(q, halves[1:] + halves[:1], 2, origin=mpq(_D[0], 2))
+    assert new.same_curve(c)
+    return verified("equals the polar-form resampling (numbered from Q_{2i} = f(m_i, s_{i+1})); same curve exactly")
+
+
+@claim(doc="sederberg", section="6.13.2", ref="(6.4), (6.5)", statement="interval halving for a non-uniform cubic")
+def halving_cub():
+    c = ki.KnotIntervalCurve(_P, _D, 3)
+    q = ki.halving_cubic(_P, _D)
+    assert np.all(c.halve().points_array() == q)
+    assert ki.KnotIntervalCurve(q, [mpq(x, 2) for x in _D for _ in range(2)], 3).same_curve(c)
+    return verified("both formulas equal the polar values f(m_{i-1}, s_i, m_i), f(s_i, m_i, s_{i+1}); same curve exactly")
+
+
+@claim(doc="sederberg", section="6.13.1", ref="Figure 6.16", statement="interval splitting: divide three edges in proportion to the neighbouring knot intervals, split the d_i parts")
+def split_construction():
+    c = ki.KnotIntervalCurve(_P, _D, 3)
+    for i in range(len(_D) - 1):
+        for left in (mpq(0), mpq(1, 3), mpq(_D[i], 2), mpq(_D[i])):
+            new = ki.split_cubic_construction(_P, _D, i, left)
+            assert np.all(new == c.split_interval(i, left).points_array())
+    return verified("construction = knot insertion by polar form, including zero intervals (double knots)")
+
+
+@claim(doc="sederberg", section="6.13.1", ref="Figure 6.18", statement="splitting off zero knot intervals on both sides of an interval uncovers the Bézier control points")
+def zero_intervals_bezier():
+    c = ki.KnotIntervalCurve(_P, _D, 3)
+    cur = c.split_interval(2, _D[2])  # d_2 -> (d_2, 0)
+    cur = cur.split_interval(2, 0)  # -> (0, d_2, 0)
+    cur = cur.split_interval(3, _D[2])  # -> (0, d_2, 0, 0)
+    cur = cur.split_interval(3, 0)  # -> (0, 0, d_2, 0, 0)
+    assert list(cur.intervals[2:7]) == [0, 0, _D[2], 0, 0], cur.intervals
+    bez = cur.points_array()[3:7]  # the points around the edge carrying d_2 (index 4)
+    pieces = {span: pc for span, pc in c.to_spline().to_bezier()}
+    a = c.knot(2 + 2)  # start of interval d_2: k_{c+2}, c = 2
+    assert np.all(pieces[(a, a + _D[2])].points_array() == bez)
+    return verified("two zero intervals on each side of d_2: the four control points between them are the Bézier points")
+
+
+@claim(doc="sederberg", section="6.13.3", ref="quadratic zero intervals",
+       statement="to find the Bézier control points in a quadratic B-spline, it suffices to insert a single zero knot interval on each side of a non-zero knot interval")
+def quadratic_zero_intervals():
+    c = ki.KnotIntervalCurve(_P, _D, 2)
+    pieces = {span: pc for span, pc in c.to_spline().to_bezier()}
+    for i in range(len(_D)):
+        cur = c.split_interval(i, 0).split_interval(i + 1, _D[i])  # d_i -> (0, d_i, 0), carried by three control points
+        assert list(cur.intervals[i : i + 3]) == [0, _D[i], 0], cur.intervals
+        a = c.knot(i + 1)  # even degree: d_i = k_{i+2} - k_{i+1} (c = 1)
+        a = a if (a, a + _D[i]) in pieces else a + sum(_D)  # the domain starts one interval in: d_0 appears after a period
+        bez = cur.points_array()[i : i + 3]
+        assert np.all(pieces[(a, a + _D[i])].points_array() == bez), i
+        assert np.all(bez[1] == c.points_array()[i])  # the control point carrying d_i stays: it is the middle Bézier point
+    return verified("every interval of a periodic quadratic with intervals (1, 2, 3, 1, 2): the three control points around "
+                    "(0, d_i, 0) are exactly the Bézier points of that segment, the middle one the old P_i")
+
+
+@claim(doc="sederberg", section="6.13.4", ref="(6.6)", statement="hodograph: Q_i = c_i (P_{i+1} - P_i), c_i = n / (sum of n neighbouring knot intervals)")
+def hodograph_intervals():
+    for p in (2, 3, 4, 5):
+        c = ki.KnotIntervalCurve(_P, _D, p)
+        h = c.hodograph()
+        spline = c.to_spline()
+        der = spline.derivative()
+        lo, hi = spline.domain
+        for k in range(13):
+            t = lo + (hi - lo) * mpq(k, 12)
+            assert der.evaluate(t) == h.evaluate(t)
+    return verified_range("degrees 2..5, non-uniform periodic", "equals the derivative of the spline (for even n the interval list of the hodograph is rotated by one)")
+
+
+@claim(doc="sederberg", section="6.13.5", ref="(6.7)-(6.9)", statement="degree elevation: intervals d_1, 0, d_2, 0, ...; quadratic P_{i,j} = ((2d_i + 3d_j)P_i + d_i P_j)/(3d_i + 3d_j)")
+def elevation_quadratic():
+    c = ki.KnotIntervalCurve(_P, _D, 2)
+    e = c.elevate()
+    assert e.same_curve(c)
+    assert list(e.intervals) == [x for v in _D for x in (v, 0)]
+    assert np.all(np.roll(e.points_array(), -1, axis=0) == ki.elevate_quadratic(_P, _D))
+    return verified("Ramshaw's averages of polar values = (6.9); the elevated curve is the same curve")
+
+
+@claim(doc="sederberg", section="6.13.5", ref="Figure 6.27", statement="degree 3 -> 4: P_{i,i+1} = ((d_i+2d_{i+1})P_i + (2d_{i-1}+d_i)P_{i+1})/(2(d_{i-1}+d_i+d_{i+1})) and the printed Q_i")
+def elevation_cubic():
+    c = ki.KnotIntervalCurve(_P, _D, 3)
+    e = c.elevate()
+    assert e.same_curve(c)
+    assert np.all(np.roll(e.points_array(), 1, axis=0) == ki.elevate_cubic(_P, _D))
+    return verified("both printed rules equal F(s_i,s_i,s_{i+1},s_{i+1}) and F(s_{i-1},s_i,s_i,s_{i+1}) (Ramshaw)")
+
+
+@claim(doc="sederberg", section="6.13", ref="Figure 6.14", statement="polar labels inferred from knot intervals (origin at P_0)")
+def labels_figure():
+    return not_checkable("Figure 6.14 (the labelled example) is lost in the extraction; labels are produced by KnotIntervalCurve.polar_labels")
+
+
+# ---------------------------------------------------------------------------- 6.14
+def _sym_knots():
+    return sp.symbols("t1:6")
+
+
+def _printed_pieces(t, t1, t2, t3, t4, t5):
+    return [
+        (t - t1) ** 3 / ((t4 - t1) * (t3 - t1) * (t2 - t1)),
+        (t - t2) ** 2 * (t5 - t) / ((t5 - t2) * (t4 - t2) * (t3 - t2))
+        + (t - t2) * (t - t1) * (t4 - t) / ((t4 - t1) * (t4 - t2) * (t3 - t2))
+        + (t3 - t) * (t - t1) ** 2 / ((t4 - t1) * (t3 - t1) * (t3 - t2)),
+        (t4 - t) ** 2 * (t - t1) / ((t4 - t1) * (t4 - t2) * (t4 - t3))
+        + (t4 - t) * (t5 - t) * (t - t2) / ((t5 - t2) * (t4 - t2) * (t4 - t3))
+        + (t - t3) * (t5 - t) ** 2 / ((t5 - t2) * (t5 - t3) * (t4 - t3)),
+        (t5 - t) ** 3 / ((t5 - t2) * (t5 - t3) * (t5 - t4)),
+    ]
+
+
+@claim(doc="sederberg", section="6.14.1", ref="(6.10)-(6.13)", statement="the four cubic pieces of the basis function over t1..t5")
+def basis_pieces():
+    ks = _sym_knots()
+    printed = _printed_pieces(T, *ks)
+    for i in range(4):
+        ref = _cox_sym(0, 3, list(ks), T, (ks[i], ks[i + 1]))
+        assert _is_zero(printed[i] - ref, (T,) + tuple(ks)), i
+    rng = _rng(614)
+    for _ in range(5):
+        kv = sorted(mpq(rng.randint(0, 40), 4) for _ in range(5))
+        kv = [k + i for i, k in enumerate(kv)]
+        for (a, b), coeffs in bx.basis_function_pieces(kv):
+            s = sp.Symbol("s")
+            mine = sum(_R(c) * sp.binomial(3, j) * s**j * (1 - s) ** (3 - j) for j, c in enumerate(coeffs))
+            i = kv.index(a)
+            ref = printed[i].subs(dict(zip(ks, [_R(x) for x in kv]))).subs(T, _R(a) + s * (_R(b) - _R(a)))
+            assert sp.expand(mine - sp.expand(ref)) == 0
+    return verified("symbolically against Cox-de Boor with symbolic knots; exactcagd's explicit-B-spline pieces agree on random knots")
+
+
+@claim(doc="sederberg", section="6.14.1", ref="derivatives", statement="B'(t_i), B''(t_i) at the knots t1..t4 as printed")
+def basis_derivatives():
+    t1, t2, t3, t4, t5 = ks = _sym_knots()
+    pcs = _printed_pieces(T, *ks)
+    d1 = [sp.Integer(0), 3 * (t2 - t1) / ((t3 - t1) * (t4 - t1)),
+          3 * (t1 * (t2 - t3) - t2 * t3 + t3 * t4 + t3 * t5 - t4 * t5) / ((t1 - t4) * (t2 - t4) * (t2 - t5)),
+          -3 * (t5 - t4) / ((t5 - t2) * (t5 - t3))]
+    d2 = [sp.Integer(0), 6 / ((t3 - t1) * (t4 - t1)), 6 * (t1 + t2 - t4 - t5) / ((t1 - t4) * (t4 - t2) * (t2 - t5)),
+          6 / ((t5 - t2) * (t5 - t3))]
+    knots_at = [t1, t2, t3, t4]
+    for i, x in enumerate(knots_at):
+        for piece in ([pcs[i]] + ([pcs[i - 1]] if i else [])):  # C^2: both neighbouring pieces
+            assert _is_zero(piece.diff(T).subs(T, x) - d1[i], ks), ("B'", i)
+            assert _is_zero(piece.diff(T, 2).subs(T, x) - d2[i], ks), ("B''", i)
+    return verified("all eight values, from both neighbouring pieces (so C^2 too), symbolically")
+
+
+@claim(doc="sederberg", section="6.14.2", ref="refinement c_i, d_i",
+       statement="N[s_0..s_{n+1}] = c_i N[s_0..k..s_n] + d_i N[s_1..k..s_{n+1}], c_i = (k - s_0)/(s_{n+1} - s_0) if k < s_n else 1")
+def refinement_6142():
+    rng = _rng(6142)
+    s = sp.Symbol("s")
+    for n in (2, 3, 4):
+        kv = [mpq(i * 2 + rng.randint(0, 1)) for i in range(n + 2)]
+        for k in [kv[0] + mpq(1, 3), (kv[1] + kv[2]) / 2, kv[-1] - mpq(1, 5)]:
+            (c, left), (d, right) = bx.refine_basis_function(kv, k)
+            for x in [kv[0] + (kv[-1] - kv[0]) * mpq(j, 11) for j in range(12)]:
+                assert bx.basis_function(kv, x) == c * bx.basis_function(left, x) + d * bx.basis_function(right, x)
+            if k < kv[n]:
+                printed_c = (k - kv[0]) / (kv[n + 1] - kv[0])
+                assert printed_c != c
+    return erratum(
+        printed="c_i = (k - s_0)/(s_{n+1} - s_0)",
+        corrected="c_i = (k - s_0)/(s_n - s_0)",
+        detail="the knot-insertion (Boehm) coefficient of the left function; (15.14)-(15.16) print the correct s_3 - s_0 for n = 3. "
+        "Verified exactly at 12 points per case for degrees 2, 3, 4; d_i is correct",
+    )
+
+
+@claim(doc="sederberg", section="6.14.3", ref="(6.14)", statement="B_i^k = w_i^k B_i^{k-1} + (1 - w_{i+1}^k) B_{i+1}^{k-1}, w_i^k = (t - t_i)/(t_{i+k-1} - t_i)")
+def recurrence():
+    rng = _rng(6143)
+    knots = sorted(mpq(rng.randint(0, 30), 3) + i for i, _ in enumerate(range(9)))
+
+    def printed(i, k, t):
+        if k == 0:
+            return mpq(1) if knots[i] <= t <= knots[i + 1] else mpq(0)
+        den = knots[i + k - 1] - knots[i]
+        w = lambda j: ((t - knots[j]) / (knots[j + k - 1] - knots[j]) if knots[j + k - 1] != knots[j] else mpq(0))  # noqa: E731
+        return w(i) * printed(i, k - 1, t) + (1 - w(i + 1)) * printed(i + 1, k - 1, t)
+
+    bad = False
+    for k in (1, 2, 3):
+        for i in range(0, len(knots) - k - 1):
+            for j in range(1, 20):
+                t = knots[0] + (knots[-1] - knots[0]) * mpq(j, 20)
+                ref = bx.basis_function(knots[i : i + k + 2], t)
+                assert bx.basis_recurrence(knots, i, k, t) == ref
+                bad |= printed(i, k, t) != ref
+    assert bad
+    return erratum(
+        printed="w_i^k(t) = (t - t_i)/(t_{i+k-1} - t_i)",
+        corrected="w_i^k(t) = (t - t_i)/(t_{i+k} - t_i), with B_i^0 the indicator of [t_i, t_{i+1})",
+        detail="with t_{i+k-1} the degree-1 step always takes the 'otherwise 0' branch and B_i^1 = B_{i+1}^0; the corrected "
+        "recurrence equals the explicit basis function at 19 points per function for k = 1, 2, 3 (the closed indicator "
+        "[t_i, t_{i+1}] of the notes double-counts at knots)",
+    )
+
+
+@claim(doc="sederberg", section="6.14.3", ref="(6.15)", statement="P(t) = sum_{j=i}^{n+i} B^n_{j+1-n}(t) P(t_{j+1-n}, ..., t_j) on [t_i, t_{i+1}]")
+def curve_from_recurrence():
+    rng = _rng(615)
+    n = 3
+    knots = [mpq(k * k, 4) + k for k in range(14)]  # non-uniform
+    label = {j: mpq(rng.randint(-9, 9)) for j in range(14)}  # P(t_{j+1-n}, ..., t_j)
+    i = 6
+    for r in range(1, 5):
+        t = knots[i] + (knots[i + 1] - knots[i]) * mpq(r, 5)
+        ctrl = np.array([[label[j]] for j in range(i, i + n + 1)], dtype=object)
+        value = bx.segment_blossom(ctrl, knots[i + 1 - n : i + n + 1], [t] * n)[0]
+        printed = sum((bx.basis_recurrence(knots, j + 1 - n, n, t) * label[j] for j in range(i, n + i + 1)), start=mpq(0))
+        corrected = sum((bx.basis_recurrence(knots, j - n, n, t) * label[j] for j in range(i, n + i + 1)), start=mpq(0))
+        assert corrected == value and printed != value
+    return erratum(
+        printed="B^n_{j+1-n}(t) P(t_{j+1-n}, ..., t_j)",
+        corrected="B^n_{j-n}(t) P(t_{j+1-n}, ..., t_j)",
+        detail="with (6.14) B_i^n is supported on [t_i, t_{i+n+1}]; the control point labelled (t_{j+1-n}..t_j) needs the "
+        "function supported on [t_{j-n}, t_{j+1}]; checked against the polar value f(t, t, t) of the segment (de Boor)",
+    )
+
+
+@claim(doc="sederberg", section="6.14", ref="example", statement="the cubic B-spline of Figure 6.28: n = 7 and the knot vector [0,0,0,2,3,4,5,5,5] (n + d - 1 knots)")
+def example_614():
+    knots = [0, 0, 0, 2, 3, 4, 5, 5, 5]
+    n, d = 7, 3
+    assert len(knots) == n + d - 1
+    standard = [0] + knots + [5]
+    c = bx.SplineCurve([[0]] * n, standard)
+    assert c.domain == (0, 5) and len(c.spans()) == 4
+    g = c.greville()
+    basis3 = bx.SplineCurve([[x, 1 if i == 2 else 0] for i, x in enumerate(g)], standard)  # B_3^3 as an explicit curve
+    for t in [mpq(k, 4) for k in range(21)]:
+        x, y = basis3.evaluate(t)
+        assert x == t and y == bx.basis_function(standard[2 : 2 + 5], t)
+    return verified("9 = n + d - 1 knots; B_3^3 evaluated as the explicit B-spline f(t,t,t) with Greville x equals the basis function")

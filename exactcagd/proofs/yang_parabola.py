@@ -1,0 +1,308 @@
+"""Yang et al. (004), section 5: the s/t-parabolas, eqs. (6)-(17), Theorems 1 and 2, the cubic
+rational Bézier form of the parabola, and the degree claims.
+
+Notation: the s-parabola is the iso-line s = 1/2 of the cubic reparameterization (5)
+with beta_1 = beta_2 = beta_3 = beta; there ``u = 1 - alpha(t)`` and ``v = M_beta(t)``.
+"""
+
+from __future__ import annotations
+
+import random
+
+import sympy
+from gmpy2 import mpq
+
+from exactcagd import BezierSurface
+from exactcagd.curves_on_surfaces import approximate
+from exactcagd.curves_on_surfaces.approximants import parabola, s_parabola
+from exactcagd.curves_on_surfaces.samples import analytic_surface, closed_domain_curve
+from exactcagd.reparam import cubic
+from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
+
+a1, a2, a3, b, t, v, u = sympy.symbols("alpha1 alpha2 alpha3 beta t v u")
+ALPHA = a1 * (1 - t) ** 2 + 2 * a2 * t * (1 - t) + a3 * t**2
+M = (b - 1) * t / (2 * b * t - t - b)  # eq. (8) = eq. (3) with beta
+
+
+def _u_of_v():
+    t_of_v = sympy.solve(sympy.Eq(v, M), t)[0]
+    return sympy.together((1 - ALPHA).subs(t, t_of_v))
+
+
+def _printed_6_7():
+    A = (4 - a1 - 2 * a2 - a3) * b**2 + (2 * a1 + 2 * a2 - 4) * b + 1 - a1
+    B = 2 * (b - 1) * (a1 * b - 2 * b + a2 * b - a1 + 1)
+    C = (b - 1) ** 2 * (1 - a1)
+    D = (2 * b - 1) ** 2
+    E = -2 * (b - 1) * (2 * b - 1)
+    F = (b - 1) ** 2
+    return (A * v**2 + B * v + C) / (D * v**2 + E * v + F)
+
+
+@claim(doc="yang", section="5", ref="(6), (7)", statement="the s = 1/2 iso-line in the original domain: u(v) = (a v^2 + b v + c)/(d v^2 + e v + f) with a..f of (7)")
+def eq6_7():
+    # iso-line s = 1/2 of (5): u = (alpha - 1)/2 / ((2 alpha - 1)/2 - alpha) = 1 - alpha(t), v = M_beta(t)
+    s = sympy.Rational(1, 2)
+    assert sympy.simplify((ALPHA - 1) * s / (2 * ALPHA * s - s - ALPHA) - (1 - ALPHA)) == 0
+    assert sympy.simplify(_u_of_v() - _printed_6_7()) == 0
+    return verified("eliminating t from u = 1 - alpha(t), v = M_beta(t) gives exactly (6) with (7) (symbolic in alpha_k, beta); d v^2 + e v + f = ((2 beta - 1) v - (beta - 1))^2")
+
+
+@claim(doc="yang", section="5", ref="(8), (9)", statement="substituting v = (beta-1) t/(2 beta t - t - beta) into (6): g u = h v^2 + p v + q with g = beta^2 (1-beta), h = 2 a1 + 8 b^3 - ..., p = beta(5 beta - 4 beta^2 + ...), q = -(1-a1) beta^2 (1-beta)")
+def eq8_9():
+    printed = _printed_6_7()
+    sub = sympy.cancel(printed.subs(v, M))
+    correct = (1 - a1) + 2 * (a1 - a2) * t + (2 * a2 - a1 - a3) * t**2
+    assert sympy.cancel(sub - correct) == 0
+    g = b**2 * (1 - b)
+    h = 2 * a1 + 8 * b**3 - 14 * b**2 + 9 * b - 2 * a2 * b + 4 * a2 * b**2 - a3 * b**3 + 11 * a1 * b**2 + a3 * b**2 - 5 * a1 * b**3 - 2 * a2 * b**3 - 8 * a1 * b - 2
+    p = b * (5 * b - 4 * b**2 + 4 * a1 * b**2 - 2 - 6 * a1 * b + 2 * a1)
+    q = -(1 - a1) * b**2 * (1 - b)
+    assert sympy.cancel(g * sub - (h * t**2 + p * t + q)) != 0  # neither in t ...
+    assert sympy.cancel(g * printed - (h * v**2 + p * v + q)) != 0  # ... nor in v
+    return erratum(
+        "g u = h v^2 + p v + q, g = beta^2 (1 - beta), h = ..., p = ..., q = -(1 - alpha1) beta^2 (1 - beta)",
+        "u = (1 - alpha1) + 2 (alpha1 - alpha2) t + (2 alpha2 - alpha1 - alpha3) t^2 (g = 1, h = 2 alpha2 - alpha1 - alpha3, "
+        "p = 2 (alpha1 - alpha2), q = 1 - alpha1; the variable is t, not v)",
+        "substituting (8) into (6)-(7) gives back u = 1 - alpha(t) (symbolic); the printed g, h, p, q satisfy the identity "
+        "neither in t nor in v (already u(0) = q/g = -(1 - alpha1) has the wrong sign)",
+    )
+
+
+@claim(doc="yang", section="5", ref="Theorem 2", statement="The curve in Eq. (6) is a parabola")
+def theorem2():
+    # (u, t) plane: u is a quadratic polynomial in t -> a parabola y^2 = r x there (h != 0) or a line (h = 0).
+    # (u, v) plane: u L(v)^2 = N(v) with L linear -- a cubic curve unless beta = 1/2 or h = 0.
+    vals = {a1: sympy.Rational(1, 5), a2: sympy.Rational(4, 5), a3: sympy.Rational(3, 10), b: sympy.Rational(2, 5)}
+    num, den = sympy.fraction(sympy.together(_printed_6_7().subs(vals)))
+    implicit = sympy.Poly(sympy.expand(u * den - num), u, v)
+    assert implicit.total_degree() == 3 and sympy.factor_list(implicit.as_expr())[1][0][0].as_poly(u, v).total_degree() == 3
+    at_half = sympy.Poly(sympy.expand(sympy.fraction(sympy.together(_printed_6_7().subs({**vals, b: sympy.Rational(1, 2)})))[1]), v)
+    assert at_half.degree() <= 0  # beta = 1/2: the denominator is constant, u(v) is a true parabola
+    return erratum(
+        "the curve (6) is a parabola (y^2 = r x with y = v + p/(2h), x = u + p^2/(4gh))",
+        "the curve is a parabola in the (t, u) coordinates, u = 1 - alpha(t), with v = M_beta(t) a Möbius function of t "
+        "(a line if 2 alpha2 = alpha1 + alpha3); in the (u, v) domain it is the rational cubic u ((2beta-1)v - (beta-1))^2 = N(v), "
+        "a parabola only for beta = 1/2",
+        "alpha = (1/5, 4/5, 3/10), beta = 2/5: the implicit equation u L(v)^2 - N(v) = 0 is irreducible of total degree 3; at beta = 1/2 L is constant",
+    )
+
+
+@claim(doc="yang", section="5", ref="(10)-(13)", statement="u(0) = 1 - a1 = u0, u(1) = 1 - a3 = u1, u'(0) = 2 beta (a1 - a2)/(1 - beta) = k1, u'(1) = 2 (1 - beta)(a2 - a3)/beta = k2 (u' = du/dv)")
+def eq10_13():
+    uu, vv = 1 - ALPHA, M
+    dudv = sympy.diff(uu, t) / sympy.diff(vv, t)
+    assert sympy.simplify(uu.subs(t, 0) - (1 - a1)) == 0 and sympy.simplify(uu.subs(t, 1) - (1 - a3)) == 0
+    assert sympy.simplify(dudv.subs(t, 0) - 2 * b * (a1 - a2) / (1 - b)) == 0
+    assert sympy.simplify(dudv.subs(t, 1) - 2 * (1 - b) * (a2 - a3) / b) == 0
+    assert vv.subs(t, 0) == 0 and sympy.simplify(vv.subs(t, 1)) == 1
+    return verified("symbolic in alpha_k, beta; k1, k2 are du/dv in the domain normalized to v0 = 0, v1 = 1 (k = m (v1 - v0)/n)")
+
+
+@claim(doc="yang", section="5", ref="(14), Type 1", statement="m0 = 0: alpha2 = alpha1 (14) and beta = 2(u1-u0)/(2(u1-u0)+k2) in (0,1) for monotonic curves")
+def eq14():
+    u0, u1, k2 = sympy.symbols("u0 u1 k2")
+    beta = sympy.solve(sympy.Eq(2 * (1 - b) * (a1 - a3) / b, k2).subs({a1: 1 - u0, a3: 1 - u1}), b)[0]
+    assert sympy.simplify(beta - 2 * (u1 - u0) / (2 * (u1 - u0) + k2)) == 0
+    rng = random.Random(1)
+    for _ in range(200):
+        du = mpq(rng.randint(1, 50), 50) * rng.choice([1, -1])
+        kk = mpq(rng.randint(1, 50), 20) * (1 if du > 0 else -1)  # monotone: k2 has the sign of u1 - u0
+        bb = 2 * du / (2 * du + kk)
+        assert 0 < bb < 1
+    return verified("symbolic solve of (13) with alpha2 = alpha1; beta in (0, 1) whenever k2 and u1 - u0 have the same sign (200 exact monotone cases)")
+
+
+@claim(doc="yang", section="5", ref="(15)", statement="From Eq. (12), beta = 2(a2 - a3)/(2(a2 - a3) + k2); substituting (15) into (13): 4 a2^2 - 4(a1 + a3) a2 + 4 a1 a3 + k1 k2 = 0")
+def eq15():
+    k1, k2 = sympy.symbols("k1 k2")
+    beta15 = 2 * (a2 - a3) / (2 * (a2 - a3) + k2)
+    assert sympy.simplify((2 * (1 - b) * (a2 - a3) / b).subs(b, beta15) - k2) == 0  # (15) solves (13)
+    quad = sympy.numer(sympy.together((2 * b * (a1 - a2) / (1 - b)).subs(b, beta15) - k1))
+    target = 4 * a2**2 - 4 * (a1 + a3) * a2 + 4 * a1 * a3 + k1 * k2
+    assert sympy.expand(quad + target) == 0
+    return erratum(
+        "From Eq. (12) we have (15); substituting (15) into (13) gives the quadratic",
+        "(15) solves (13) (u'(1) = k2); substituting (15) into (12) (u'(0) = k1) gives 4 a2^2 - 4(a1+a3) a2 + 4 a1 a3 + k1 k2 = 0",
+        "symbolic: the formula (15) and the quadratic are right, the equation numbers (12)/(13) are swapped",
+    )
+
+
+@claim(doc="yang", section="5", ref="(16), (17)", statement="alpha2 = ((a1 + a3) + sqrt(Delta))/2, Delta = (a1 - a3)^2 - k1 k2 = (u0-u1)^2 - m1 m0 (v0-v1)^2/(n1 n0); 0 < alpha2 < 1 always holds for a monotonic curve")
+def eq16_17():
+    k1, k2 = sympy.symbols("k1 k2")
+    roots = sympy.solve(4 * a2**2 - 4 * (a1 + a3) * a2 + 4 * a1 * a3 + k1 * k2, a2)
+    Delta = (a1 - a3) ** 2 - k1 * k2
+    assert {sympy.simplify(r - (a1 + a3) / 2) for r in roots} == {sympy.sqrt(Delta) / 2, -sympy.sqrt(Delta) / 2} or all(
+        sympy.simplify((2 * r - a1 - a3) ** 2 - Delta) == 0 for r in roots
+    )
+    m0, n0, m1, n1, u0, u1, v0, v1 = sympy.symbols("m0 n0 m1 n1 u0 u1 v0 v1")
+    d17 = Delta.subs({a1: 1 - u0, a3: 1 - u1, k1: m0 * (v1 - v0) / n0, k2: m1 * (v1 - v0) / n1})
+    assert sympy.simplify(d17 - ((u0 - u1) ** 2 - m1 * m0 * (v0 - v1) ** 2 / (n1 * n0))) == 0
+    # both roots give alpha2 strictly between alpha1 and alpha3 and beta in (0, 1) for monotone data
+    rng = random.Random(2)
+    count = 0
+    for _ in range(1000):
+        p0 = (mpq(rng.randint(0, 40), 40), mpq(0))
+        p1 = (mpq(rng.randint(0, 40), 40), mpq(1))
+        if p0[0] == p1[0]:
+            continue
+        sg = 1 if p1[0] > p0[0] else -1
+        d0 = (sg * mpq(rng.randint(1, 30), 10), mpq(rng.randint(1, 30), 10))
+        d1 = (sg * mpq(rng.randint(1, 30), 10), mpq(rng.randint(1, 30), 10))
+        for root in ("paper", "other"):
+            a = s_parabola(p0, d0, p1, d1, root)
+            kk1, kk2 = d0[0] / d0[1], d1[0] / d1[1]
+            if (p1[0] - p0[0]) ** 2 - kk1 * kk2 < 0:
+                assert a is None
+                continue
+            count += 1
+            al = a.params["alpha"]
+            assert 0 < al[1] < 1 and min(al[0], al[2]) <= al[1] <= max(al[0], al[2]) and 0 < a.beta < 1
+    assert count > 100
+    return verified_range(
+        f"{count} random monotone exact instances, both roots",
+        "the two roots are (a1 + a3 -+ sqrt(Delta))/2; (17) is (16)'s Delta in curve data (symbolic); for k1 k2 > 0 "
+        "sqrt(Delta) < |a1 - a3|, so BOTH roots lie strictly between alpha1 and alpha3 (hence in (0,1)) and give beta in (0,1): "
+        "the paper's '+' is a choice, not a necessity (exactcagd: root='paper' | 'other')",
+    )
+
+
+@claim(doc="yang", section="5", ref="Theorem 1", statement="Types 1-4: m0 = 0 or m1 = 0 -> s-parabola; n0 = 0 or n1 = 0 -> t-parabola; X >= K -> s-parabola; X <= K -> t-parabola (X = (u0-u1)^2/(v0-v1)^2, K = m0 m1/(n0 n1)); every monotonic curve falls into one type")
+def theorem1():
+    rng = random.Random(3)
+    count = 0
+    for _ in range(400):
+        p0 = (mpq(rng.randint(0, 30), 30), mpq(rng.randint(0, 30), 30))
+        p1 = (mpq(rng.randint(0, 30), 30), mpq(rng.randint(0, 30), 30))
+        su = 1 if p1[0] >= p0[0] else -1
+        sv = 1 if p1[1] >= p0[1] else -1
+        if p0[0] == p1[0] or p0[1] == p1[1]:
+            continue
+        comps = [mpq(rng.randint(0, 6), 3) for _ in range(4)]
+        zeros = [c == 0 for c in comps]
+        if sum(zeros) > 1:  # the theorem assumes the unmentioned components non-zero
+            continue
+        d0 = (su * comps[0], sv * comps[1])
+        d1 = (su * comps[2], sv * comps[3])
+        a = parabola(p0, d0, p1, d1)
+        assert a is not None
+        count += 1
+        if zeros[0] or zeros[2]:
+            assert a.kind == "s-parabola"
+        elif zeros[1] or zeros[3]:
+            assert a.kind == "t-parabola"
+        else:
+            X = (p0[0] - p1[0]) ** 2 / (p0[1] - p1[1]) ** 2
+            K = d0[0] * d1[0] / (d0[1] * d1[1])
+            assert a.kind == ("s-parabola" if X >= K else "t-parabola")
+    # two zero components of different kinds (m0 = 0 and n1 = 0): no parabola exists (the algorithm cuts the curve)
+    assert parabola((mpq(0), mpq(0)), (mpq(0), mpq(1)), (mpq(1), mpq(1)), (mpq(1), mpq(0))) is None
+    return verified_range(
+        f"{count} random monotone exact cases with at most one zero end-derivative component",
+        "X >= K and X <= K cover every case (Type 3 / Type 4); with both m0 = 0 and n1 = 0 (excluded by the theorem's "
+        "assumption) no s- or t-parabola exists -- exactcagd cuts such a piece at its shoulder point",
+    )
+
+
+@claim(doc="yang", section="5", ref="cubic form of C2", statement="C2 = sum w_i P_i B^3_i / sum w_i B^3_i with P0 = (1-a1, 0), P1 = ((a1 b - 2 b a2 + b + 1 - a1)/(b+1), (1-b)/(b+1)), P2 = ((b - 2 - 2 b a2 + 2 a2 + b a3)/(b-2), 2(b-1)/(b-2)), P3 = (1-a3, 1); w1 = (b-1)^2, w2 = (1-b^2)/3, w3 = b(2-b)/3, w4 = b^2")
+def cubic_form():
+    x = sympy.Symbol("x")
+    P = [
+        (1 - a1, 0),
+        ((a1 * b - 2 * b * a2 + b + 1 - a1) / (b + 1), (1 - b) / (b + 1)),
+        ((b - 2 - 2 * b * a2 + 2 * a2 + b * a3) / (b - 2), 2 * (b - 1) / (b - 2)),
+        (1 - a3, 1),
+    ]
+    w = [(b - 1) ** 2, (1 - b**2) / 3, b * (2 - b) / 3, b**2]  # printed w1..w4 = w_0..w_3
+    B = [sympy.binomial(3, i) * x**i * (1 - x) ** (3 - i) for i in range(4)]
+    den = sum(w[i] * B[i] for i in range(4))
+    cu = sum(w[i] * P[i][0] * B[i] for i in range(4)) / den
+    cv = sum(w[i] * P[i][1] * B[i] for i in range(4)) / den
+    assert sympy.simplify(cv - x) == 0  # parametrized by v itself
+    assert sympy.simplify(cu - _printed_6_7().subs(v, x)) == 0
+    return reconstructed(
+        "C2(t) with weights labelled w1..w4",
+        "weights w0..w3 = (b-1)^2, (1-b^2)/3, b(2-b)/3, b^2, and the parameter of this form is v itself (C2(v) = (u(v), v)); "
+        "in the parameter t of the iso-line the same control points carry the weights b, (1+b)/3, (2-b)/3, 1-b (Möbius-equivalent)",
+        "symbolic: v-coordinate of the printed form is x, u-coordinate equals (6)-(7) at v = x",
+    )
+
+
+@claim(doc="yang", section="6", ref="degree max(2m+n, m+2n)", statement="the approximate curve has degree max(2m + n, m + 2n), lower than 2m + 2n (conics) and (m + n) d (exact)")
+def degree_claim():
+    rng = random.Random(4)
+    for m, n in [(1, 2), (2, 1), (3, 3), (2, 3)]:
+        S = BezierSurface([[[rng.randint(-3, 3) for _ in range(3)] for _ in range(n + 1)] for _ in range(m + 1)])
+        p0, p1 = (mpq(1, 5), mpq(1, 10)), (mpq(4, 5), mpq(9, 10))
+        sp_ = s_parabola(p0, (mpq(1, 2), mpq(1)), p1, (mpq(1, 4), mpq(1)))
+        tp = parabola(p0, (mpq(1), mpq(1, 4)), p1, (mpq(1), mpq(1, 2)))
+        assert tp.kind == "t-parabola"
+        assert sp_.image_hom(S.homogeneous()).shape[0] - 1 == 2 * m + n
+        assert tp.image_hom(S.homogeneous()).shape[0] - 1 == m + 2 * n
+        # the s-parabola image is the s = 1/2 iso-line of the cubic reparameterization, whose t-degree is 2m + n
+        assert cubic(S, ("1/3", "1/2", "2/3"), ("1/2", "1/2", "1/2")).degree[1] == 2 * m + n
+        # a rational conic (quadratic u, v with one weight function) through the surface: degree 2(m + n)
+        from exactcagd.reparam import substitute_curve
+
+        w = [mpq(1), mpq(1, 2), mpq(1)]
+        conic = ([mpq(1, 5) * w[0], mpq(1, 2) * w[1], mpq(4, 5) * w[2]], w), ([mpq(0), mpq(1) * w[1], mpq(1, 3) * w[2]], w)
+        assert substitute_curve(S.homogeneous(), *conic).shape[0] - 1 == 2 * (m + n)
+    return verified(
+        "s-parabola images have degree 2m + n (u quadratic: 2m, v Möbius: n), t-parabolas m + 2n; a rational conic "
+        "domain curve (section 1's alternative) gives 2(m + n); checked on 4 bidegrees"
+    )
+
+
+@claim(doc="yang", section="6", ref="Tables 2-4 degrees", statement="Degree: Exact 18, Polyline 6, Hyperbola 6, Parabola 9 (bicubic surface, cubic domain curve)", slow=True)
+def table_degrees():
+    S = analytic_surface(4, 4, "face")
+    D = closed_domain_curve(8)
+    r = {meth: approximate(S, D, "1e-1", meth, angle_tol=30) for meth in ("parabola", "hyperbola", "polyline")}
+    assert (r["parabola"].degree, r["hyperbola"].degree, r["polyline"].degree) == (9, 6, 6)
+    # exact image of a cubic piece: (m + n) d = 18 (degree of F(K(t)) by substitution; checked with sympy on a tiny patch)
+    piece = D.to_bezier()[0][1]
+    rng = random.Random(5)
+    patch = BezierSurface([[[rng.randint(-5, 5) for _ in range(3)] for _ in range(4)] for _ in range(4)])
+    tt = sympy.Symbol("t")
+    K = piece.to_sympy(tt)
+    F = patch.to_sympy(u, v)
+    num, den = sympy.fraction(sympy.cancel(sympy.together(F[2].subs({u: K[0], v: K[1]}, simultaneous=True))))
+    assert max(sympy.degree(num, tt), sympy.degree(den, tt)) == 18
+    return verified("bicubic B-spline surface and cubic NURBS domain curve: parabola 9 = 2m+n, hyperbola 6 = polyline 6 = m+n, exact image of one piece 18 = (m+n) d (reduced rational function)")
+
+
+@claim(doc="yang", section="6", ref="Tables 2-4 continuity", statement="Continuity: parabola G1; polyline and hyperbola 1 deg-G1; all curves lie completely on the surface (distance 0)")
+def table_continuity():
+    S = analytic_surface(4, 4, "face")
+    D = closed_domain_curve(8)
+    r = approximate(S, D, "1e-2")
+    assert r.continuity == "G1" and r.g1_verified
+    h = approximate(S, D, "1e-2", "hyperbola", angle_tol=10)
+    assert h.max_joint_angle <= 10
+    return verified("exact G1 at every joint of the parabola result (cross products of exact tangents are 0); baselines meet their angle tolerance; segments are exact images X(u(t), v(t)) (tests check it at 2N+1 parameters)")
+
+
+@claim(doc="yang", section="4.2", ref="hyperbola iso-lines", statement="a vertical/horizontal segment of the quadratic reparameterization's domain is a hyperbola in the original domain; an s-hyperbola has only three variables alpha1, alpha2, beta, so G1 (four constraints) is impossible in general")
+def quadratic_iso_lines():
+    A1, A2 = sympy.symbols("A1 A2")
+    # s = 1/2 on (4): alpha(t) = A1 t + A2 (1 - t), u = 1 - alpha(t) (linear), v = M_beta(t)
+    uu = 1 - (A1 * t + A2 * (1 - t))
+    vv = M
+    # implicit equation: eliminate t (u linear in t) -> a conic in (u, v)
+    t_of_u = sympy.solve(sympy.Eq(u, uu), t)[0]
+    conic = sympy.numer(sympy.together(v - vv.subs(t, t_of_u)))
+    P = sympy.Poly(conic, u, v)
+    assert P.total_degree() == 2
+    # it contains a u v term and no u^2, v^2 terms: discriminant B^2 - 4AC = B^2 > 0 -> hyperbola (when not degenerate)
+    assert P.coeff_monomial(u**2) == 0 and P.coeff_monomial(v**2) == 0 and sympy.simplify(P.coeff_monomial(u * v)) != 0
+    # end slopes in the normalized domain: k(0) k(1) = (u1 - u0)^2 for every beta -> only data with Delta = 0 are reachable
+    dudv = sympy.diff(uu, t) / sympy.diff(vv, t)
+    prod = sympy.simplify(dudv.subs(t, 0) * dudv.subs(t, 1))
+    assert sympy.simplify(prod - (uu.subs(t, 1) - uu.subs(t, 0)) ** 2) == 0
+    return verified(
+        "symbolic: the iso-line s = 1/2 of (4) satisfies a conic equation with only a u v quadratic term (a hyperbola, "
+        "B^2 - 4AC > 0); its end slopes satisfy k(0) k(1) = (u1 - u0)^2 whatever beta, so end data with "
+        "(u0 - u1)^2 != k1 k2 cannot be matched: G1 needs the cubic reparameterization"
+    )
+
