@@ -42,5 +42,9 @@ class DimensionError(InputError):
     """Objects of incompatible dimension were combined."""
 
 
+class OutputError(InputError):
+    """An output path cannot be written safely (a device, directory, link, /proc path, unwritable folder)."""
+
+
 class NotSupportedError(ExactCAGDError, NotImplementedError):
     """The construction exists in principle but this case is not supported."""
