@@ -59,3 +59,33 @@ def dehomogenize(hom: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     if any(x == 0 for x in w.reshape(-1)):
         raise WeightError("a homogeneous control point has weight zero (point at infinity)")
     return hom[..., :-1] / w[..., None], w.copy()
+
+
+def exchange_fields(data, required: tuple, optional: tuple, what: str) -> dict:
+    """Check the exact exchange form read by a ``from_dict``: a mapping with exactly these keys.
+
+    Every key in ``required`` must be present; keys outside ``required + optional`` are
+    refused (a misspelt ``"wieghts"`` would otherwise silently give a polynomial object).
+    """
+    if not isinstance(data, dict):
+        raise InputError(f"{what}.from_dict: expected a dict (the output of to_dict), got {type(data).__name__}")
+    missing = [k for k in required if k not in data]
+    if missing:
+        raise InputError(f"{what}.from_dict: missing key {missing[0]!r} (required: {', '.join(required)})")
+    unknown = sorted(set(data) - set(required) - set(optional))
+    if unknown:
+        raise InputError(f"{what}.from_dict: unknown key {unknown[0]!r} (allowed: {', '.join(required + optional)})")
+    return data
+
+
+def check_stored_degree(data: dict, actual, what: str) -> None:
+    """The ``"degree"`` entry of an exchange dict, if present, must match the data it came with."""
+    if "degree" not in data:
+        return
+    stated = data["degree"]
+    stated = list(stated) if isinstance(stated, (list, tuple)) else stated
+    expected = list(actual) if isinstance(actual, tuple) else actual
+    if stated != expected:
+        from ..errors import DegreeError
+
+        raise DegreeError(f"{what}.from_dict: 'degree' is {data['degree']!r} but the control points give {actual!r}")

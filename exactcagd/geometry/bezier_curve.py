@@ -22,7 +22,7 @@ from gmpy2 import mpq
 from ..errors import DegreeError, DomainError, InputError, WeightError
 from ..exact import bernstein as bz
 from ..exact.scalars import from_fmpq, rational_str, to_count, to_fmpq, to_rational, to_sympy
-from ._validate import dehomogenize, homogeneous, point_array, unit_parameter, weight_array
+from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, unit_parameter, weight_array
 
 __all__ = ["BezierCurve"]
 
@@ -314,6 +314,21 @@ class BezierCurve:
         if self._weights is not None:
             out["weights"] = [rational_str(w) for w in self._weights]
         return out
+
+    @classmethod
+    def from_dict(cls, data: dict) -> "BezierCurve":
+        """The curve written by :meth:`to_dict` (exact: ints and ``"p/q"`` strings).
+
+        ``"degree"`` is optional and, when present, must match the control points.
+
+        >>> c = BezierCurve([[0, 0], [1, 2], [2, 0]], weights=[1, "1/3", 2])
+        >>> BezierCurve.from_dict(c.to_dict()) == c
+        True
+        """
+        data = exchange_fields(data, ("control_points",), ("degree", "weights"), "BezierCurve")
+        curve = cls(data["control_points"], data.get("weights"))
+        check_stored_degree(data, curve.degree, "BezierCurve")
+        return curve
 
     def __repr__(self) -> str:
         kind = "rational " if self.is_rational else ""

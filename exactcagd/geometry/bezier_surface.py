@@ -23,7 +23,7 @@ from gmpy2 import mpq
 from ..errors import DegreeError, DimensionError, DomainError
 from ..exact import bernstein as bz
 from ..exact.scalars import rational_str, to_count, to_rational, to_sympy
-from ._validate import dehomogenize, homogeneous, point_array, unit_parameter, weight_array
+from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, unit_parameter, weight_array
 from .bezier_curve import BezierCurve
 
 __all__ = ["BezierSurface"]
@@ -266,6 +266,19 @@ class BezierSurface:
         if self._weights is not None:
             out["weights"] = [[rational_str(x) for x in row] for row in self._weights]
         return out
+
+    @classmethod
+    def from_dict(cls, data: dict) -> "BezierSurface":
+        """The surface written by :meth:`to_dict` (``"degree"`` optional, checked if present).
+
+        >>> s = BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, "1/3"]]])
+        >>> BezierSurface.from_dict(s.to_dict()).evaluate(1, 1)
+        (mpq(1,1), mpq(1,1), mpq(1,3))
+        """
+        data = exchange_fields(data, ("control_net",), ("degree", "weights"), "BezierSurface")
+        surface = cls(data["control_net"], data.get("weights"))
+        check_stored_degree(data, surface.degree, "BezierSurface")
+        return surface
 
     def __repr__(self) -> str:
         kind = "rational " if self.is_rational else ""

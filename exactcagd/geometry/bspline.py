@@ -22,7 +22,7 @@ import numpy as np
 from ..errors import KnotError
 from ..exact import knots as kn
 from ..exact.scalars import rational_str, to_count, to_rational
-from ._validate import dehomogenize, homogeneous, point_array, weight_array
+from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, weight_array
 from .bezier_curve import BezierCurve
 from .bezier_surface import BezierSurface
 
@@ -167,6 +167,17 @@ class BSplineCurve:
         if self._weights is not None:
             out["weights"] = [rational_str(w) for w in self._weights]
         return out
+
+    @classmethod
+    def from_dict(cls, data: dict) -> "BSplineCurve":
+        """The curve written by :meth:`to_dict` (``"degree"`` optional, checked if present).
+
+        >>> c = BSplineCurve([[0, 0], [1, 1], [2, 0], [3, 1]], knots=[0, 0, 0, 1, 2, 2, 2])
+        >>> BSplineCurve.from_dict(c.to_dict()).evaluate(1)
+        (mpq(3,2), mpq(1,2))
+        """
+        data = exchange_fields(data, ("control_points", "knots"), ("degree", "weights"), "BSplineCurve")
+        return cls(data["control_points"], data["knots"], data.get("weights"), degree=data.get("degree"))
 
     def __repr__(self) -> str:
         kind = "NURBS" if self.is_rational else "BSpline"
@@ -336,6 +347,20 @@ class BSplineSurface:
         if self._weights is not None:
             out["weights"] = [[rational_str(x) for x in row] for row in self._weights]
         return out
+
+    @classmethod
+    def from_dict(cls, data: dict) -> "BSplineSurface":
+        """The surface written by :meth:`to_dict` (``"degree"`` optional, checked if present).
+
+        >>> net = [[[i, j, 0] for j in range(3)] for i in range(3)]
+        >>> s = BSplineSurface(net, [0, 0, 1, 2, 2], [0, 0, 0, 1, 1, 1])
+        >>> BSplineSurface.from_dict(s.to_dict()).degree
+        (1, 2)
+        """
+        data = exchange_fields(data, ("control_net", "knots_u", "knots_v"), ("degree", "weights"), "BSplineSurface")
+        surface = cls(data["control_net"], data["knots_u"], data["knots_v"], data.get("weights"))
+        check_stored_degree(data, surface.degree, "BSplineSurface")
+        return surface
 
     def __repr__(self) -> str:
         kind = "NURBS" if self.is_rational else "BSpline"
