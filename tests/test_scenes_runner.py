@@ -144,7 +144,8 @@ def test_fit_approximation_product(tmp_path):
 
 def test_outputs_get_the_usual_file_mode(tmp_path):
     """Atomic writes go through a private temporary file; the result must not stay 0600."""
+    from exactcagd import outputs
     from exactcagd.scenes import serialize
 
     serialize.atomic_write_text(tmp_path / "x.json", "{}")
-    assert (tmp_path / "x.json").stat().st_mode & 0o777 == 0o666 & ~serialize._UMASK
+    assert (tmp_path / "x.json").stat().st_mode & 0o777 == 0o666 & ~outputs._UMASK

@@ -11,12 +11,11 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
+from .. import outputs as _outputs
 from ..exact.algebraic import RealAlgebraic
 from ..exact.scalars import Rational, rational_str, to_float
 from ..geometry.bezier_curve import BezierCurve
@@ -83,28 +82,11 @@ def dumps(obj) -> str:
 
 
 def atomic_write_bytes(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` atomically (temporary file in the same folder, then rename)."""
+    """Write ``data`` to ``path`` atomically, creating its folder (see :func:`exactcagd.outputs.atomic_write_bytes`:
+    only an absent path or a regular file is replaced)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
-        os.chmod(tmp, 0o666 & ~_UMASK)  # mkstemp makes 0600 files; outputs get the usual mode
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-
-
-def _read_umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-_UMASK = _read_umask()  # read once: os.umask can only be read by setting it (not thread-safe)
+    _outputs.atomic_write_bytes(path, data)
 
 
 def atomic_write_text(path: Path, text: str) -> None:
