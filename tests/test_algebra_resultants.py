@@ -147,3 +147,19 @@ def test_bad_input():
         resultant_coeffs([1, 2], [1, 1], "magic")
     with pytest.raises(InputError):
         common_roots_linear(x + y, x - y)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(st.fractions(min_value=-5, max_value=5, max_denominator=7), min_size=2, max_size=5),
+       st.lists(st.integers(-4, 4), min_size=2, max_size=4))
+def test_default_route_is_flint_and_matches_sympy(ca, cb):
+    # issue 18: resultant() defaults to python-flint; reference: the determinant of sympy's
+    # own Sylvester matrix (sympy.resultant flips the sign when deg f < deg g, so it is not
+    # used), rational coefficients and polynomial coefficients in x, y
+    from sympy.polys.subresultants_qq_zz import sylvester
+
+    f = sum(sp.Rational(c.numerator, c.denominator) * x**(i % 2) * t**i for i, c in enumerate(ca)) + y * t
+    g = sum(c * t**i for i, c in enumerate(cb)) + x
+    expected = sylvester(f, g, t, 1).det()
+    assert sp.expand(resultant(f, g, t) - expected) == 0
+    assert sp.expand(resultant(f, g, t, method="sylvester") - expected) == 0

@@ -8,7 +8,7 @@ singular points, genus, discriminants and parametrization (19).
 
 Public entry points (stable signatures)::
 
-    resultant(f, g, var, method="sylvester")      # or "bezout", "flint": same value
+    resultant(f, g, var, method="flint")          # or "sylvester", "bezout": same value
     implicitize(curve, method="resultant")        # or "bezier", "moving_lines"
     inversion(curve)                              # t = f(x, y) / g(x, y)
     groebner(polys, gens, order="lex")            # or "grevlex", "grlex"

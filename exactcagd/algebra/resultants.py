@@ -325,7 +325,7 @@ def _split(f, g, var):
     return gens, others, out
 
 
-def resultant(f, g, var, method: str = "sylvester"):
+def resultant(f, g, var, method: str = "flint"):
     """Resultant of ``f`` and ``g`` with respect to ``var`` (notes 17.3).
 
     Parameters
@@ -333,8 +333,10 @@ def resultant(f, g, var, method: str = "sylvester"):
     f, g : sympy expressions or ``Poly`` with rational coefficients; the coefficients
         (in ``var``) may be polynomials in other variables (17.5: ``p(x, t)``, ``q(y, t)``).
     var : sympy Symbol eliminated.
-    method : ``"sylvester"`` (default), ``"bezout"`` or ``"flint"`` -- all give the same
-        value, the Sylvester resultant (degrees = actual degrees in ``var``).
+    method : ``"flint"`` (default: python-flint's subresultant algorithm on ``fmpz_poly`` /
+        ``fmpz_mpoly``, 7x faster than Bareiss at n = 12), ``"sylvester"`` (Bareiss on the
+        Sylvester matrix, 17.4: the route whose steps ``--trace`` shows) or ``"bezout"`` --
+        all give the same value, the Sylvester resultant (degrees = actual degrees in ``var``).
 
     Returns
     -------
