@@ -33,9 +33,12 @@ def _run_key(key: str) -> dict:
 
 
 def _row_dict(row) -> dict:
+    from exactcagd.proofs._ledger import form_latex, form_mathml, form_text
+
     c, o = row.claim, row.outcome
     return {
         "key": c.key,
+        "label": c.label,
         "doc": c.doc,
         "section": c.section,
         "ref": c.ref,
@@ -45,8 +48,76 @@ def _row_dict(row) -> dict:
         "printed": o.printed if o else None,
         "corrected": o.corrected if o else None,
         "range": o.range if o else None,
+        "compared": o.compared if o else None,
+        "reference": o.reference if o else None,
+        "differential": bool(o and o.differential),
+        "printed_form": form_text(o.printed_form) if o and o.differential else None,
+        "corrected_form": form_text(o.corrected_form) if o and o.differential else None,
+        "printed_latex": form_latex(o.printed_form) if o and o.differential else None,
+        "corrected_latex": form_latex(o.corrected_form) if o and o.differential else None,
+        "printed_mathml": form_mathml(o.printed_form) if o and o.differential else None,
+        "corrected_mathml": form_mathml(o.corrected_form) if o and o.differential else None,
+        "counterexample": o.counterexample if o else None,
+        "covers": c.covered,
+        "source": _source_location(c.func),
         "seconds": round(row.seconds, 3),
         "slow": c.slow,
+    }
+
+
+def _source_location(func) -> str:
+    """``exactcagd/proofs/<module>.py:<line>`` of a claim's check."""
+    import inspect
+
+    import exactcagd
+
+    try:
+        line = inspect.getsourcelines(func)[1]
+        path = Path(inspect.getsourcefile(func)).resolve()
+    except (OSError, TypeError):
+        return func.__module__
+    root = Path(exactcagd.__file__).resolve().parent.parent
+    try:
+        path = path.relative_to(root)
+    except ValueError:
+        pass
+    return f"{path}:{line}"
+
+
+def run_metadata() -> dict:
+    """What produced this run: exactcagd version and git commit, dependency versions, date, machine."""
+    import datetime
+    import os
+    import platform
+    import subprocess
+    from importlib import metadata
+
+    import exactcagd
+
+    deps = {}
+    for name in ("gmpy2", "python-flint", "sympy", "numpy", "mpmath"):
+        try:
+            deps[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            deps[name] = None
+    commit = None
+    root = Path(exactcagd.__file__).resolve().parent.parent
+    try:
+        out = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True, text=True, timeout=10)
+        if out.returncode == 0:
+            commit = out.stdout.strip()
+            dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "--", "exactcagd"], capture_output=True, text=True, timeout=10)
+            if dirty.returncode == 0 and dirty.stdout.strip():
+                commit += " (with uncommitted changes)"
+    except (OSError, subprocess.SubprocessError):
+        pass
+    return {
+        "exactcagd": getattr(exactcagd, "__version__", None),
+        "git_commit": commit,
+        "python": platform.python_version(),
+        "dependencies": deps,
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
+        "machine": {"platform": platform.platform(), "machine": platform.machine(), "cpu_count": os.cpu_count()},
     }
 
 
@@ -89,7 +160,7 @@ def _cell(text) -> str:
     return str(text or "").replace("|", "\\|").replace("\n", " ")
 
 
-def ledger_markdown(rows: list[dict], total_seconds: float) -> str:
+def ledger_markdown(rows: list[dict], total_seconds: float, meta: dict | None = None) -> str:
     from exactcagd.proofs._ledger import DOCS
 
     counts: dict = {}
@@ -103,6 +174,17 @@ def ledger_markdown(rows: list[dict], total_seconds: float) -> str:
         "Summary: " + ", ".join(f"{k}: {v}" for k, v in sorted(counts.items())) + f" — {len(rows)} claims, {total_seconds:.1f} s.",
         "",
     ]
+    if meta:
+        deps = ", ".join(f"{k} {v}" for k, v in meta["dependencies"].items())
+        m = meta["machine"]
+        lines += [
+            f"Run: exactcagd {meta['exactcagd']} (commit {meta['git_commit'] or 'not a git checkout'}), "
+            f"Python {meta['python']}; {deps}; {meta['date']}; {m['platform']}, {m['cpu_count']} CPUs.",
+            "",
+            "Erratum, convention and reconstructed rows are differential: the printed form fails an independent "
+            "check (the counterexample is shown), the corrected form passes it.",
+            "",
+        ]
     for doc, title in DOCS.items():
         sub = [r for r in rows if r["doc"] == doc]
         if not sub:
@@ -112,8 +194,12 @@ def ledger_markdown(rows: list[dict], total_seconds: float) -> str:
             detail = r["detail"]
             if r["range"]:
                 detail = f"range: {r['range']}; {detail}"
-            if r["status"] in ("erratum", "reconstructed"):
+            if r["status"] in ("erratum", "reconstructed", "convention"):
                 detail = f"printed: `{r['printed']}` → corrected: `{r['corrected']}`; {detail}"
+                if r.get("counterexample"):
+                    detail += f"; counterexample (printed): {r['counterexample']}"
+            if r.get("compared"):
+                detail = f"compared: {r['compared']}; {detail}"
             lines.append(
                 f"| {_cell(r['section'])} | {_cell(r['ref'])} | {_cell(r['statement'])} | **{r['status']}** | {_cell(detail)} | {r['seconds']:.2f} |"
             )
@@ -148,18 +234,24 @@ def main(args) -> int:
 
     def progress(row, done, total):
         if not args.json:
-            print(f"[{done:>3}/{total}] {row['status']:<15} {row['seconds']:7.2f}s  {row['doc']} {row['section']} {row['ref']}", flush=True)
+            print(f"[{done:>3}/{total}] {row['status']:<15} {row['seconds']:7.2f}s  {row['label']}", flush=True)
 
     rows = run_ledger(claims, jobs=args.jobs, progress=progress)
     total = time.perf_counter() - start
+    meta = run_metadata()
     out = Path(args.out) if args.out else _default_out()
     out.mkdir(parents=True, exist_ok=True)
     base = ledger_basename(args.doc, args.fast)
-    _atomic_write(out / f"{base}.md", ledger_markdown(rows, total))
-    _atomic_write(out / f"{base.lower()}.json", json.dumps({"seconds": round(total, 2), "claims": rows}, indent=1))
+    payload = {"run": meta, "seconds": round(total, 2), "claims": rows}
+    _atomic_write(out / f"{base}.md", ledger_markdown(rows, total, meta))
+    _atomic_write(out / f"{base.lower()}.json", json.dumps(payload, indent=1))
+    if getattr(args, "html", None):
+        from exactcagd.proofs.ledger_html import write_html
+
+        write_html(payload, Path(args.html))
     failed = [r for r in rows if r["status"] == "FAILED"]
     if args.json:
-        print(json.dumps({"seconds": round(total, 2), "claims": rows}, indent=1))
+        print(json.dumps(payload, indent=1))
     else:
         print(_summary_table(rows))
         print(f"\n{len(rows)} claims in {total:.1f} s; ledger written to {out / (base + '.md')}")
@@ -179,9 +271,13 @@ def _summary_table(rows: list[dict]) -> str:
 def _trace(fragment: str) -> int:
     from exactcagd.proofs._ledger import discover
 
-    matches = [c for c in discover() if fragment in c.key]
+    claims = discover()
+    matches = [c for c in claims if fragment in c.key]
+    if not matches:  # a label as printed by ``verify`` ("sederberg 17.3.3 (17.9)")
+        wanted = " ".join(fragment.split())
+        matches = [c for c in claims if " ".join(c.label.split()) == wanted]
     if not matches:
-        print(f"no claim key contains {fragment!r}", file=sys.stderr)
+        print(f"no claim key or label matches {fragment!r}", file=sys.stderr)
         return 1
     for c in matches:
         print(f"== {c.key}: {c.doc} {c.section} {c.ref}\n   {c.statement}")
