@@ -45,10 +45,11 @@ def test_exact_sub_curves_plot_at_float_noise():
 
     segments = _pieces(image, [Fraction(1, 3), Fraction(1, 2), Fraction(4, 5)])
     result = SimpleNamespace(segments=segments, distance_bound=Fraction(0))
-    _, distances = approximation_error_profile(result, surface, DOMAIN, samples=200)
+    _, distances, joints = approximation_error_profile(result, surface, DOMAIN, samples=200)
     scale = max(np.abs(np.array([[float(x) for x in p] for p in image.points_array()])).max(), 1.0)
     assert distances.max() < 1e-13 * scale  # the old sampled panel drew ~1e-4 here
     assert len(distances) >= 200
+    assert np.allclose(joints, [1 / 3, 1 / 2, 4 / 5], atol=1e-12)  # compose keeps D's parameter
 
 
 @pytest.mark.parametrize("offset", [1e-6, 1e-9])
@@ -57,7 +58,7 @@ def test_planted_offset_plots_at_its_size(offset):
     image = compose(plane, DOMAIN)  # lies in z = 0
     shifted = [[x, y, z + offset] for x, y, z in (tuple(float(c) for c in p) for p in image.points_array())]
     result = SimpleNamespace(segments=[BezierCurve(shifted)], distance_bound=offset)
-    _, distances = approximation_error_profile(result, plane, DOMAIN, samples=300)
+    _, distances, _ = approximation_error_profile(result, plane, DOMAIN, samples=300)
     assert np.all(np.abs(distances - offset) <= 0.01 * offset)
 
 
