@@ -484,7 +484,7 @@ def _intersect(family):
             found = exact_intersect(c1, c2)
             overlaps = []
         except OverlapError as exc:
-            found, overlaps = [], _overlaps_from(exc)
+            found, overlaps = [], _overlaps_from(exc, c2)
         points = []
         for hit in found:
             points.append(
@@ -500,15 +500,21 @@ def _intersect(family):
     return build
 
 
-def _overlaps_from(exc) -> list:
-    """Overlap intervals ``t2 in [c, d]`` with their images ``t1 = (a t2 + b) / (c t2 + d)``."""
+def _overlaps_from(exc, curve2: BezierCurve) -> list:
+    """Common arcs from an :class:`OverlapError`: ``t2`` in each interval, ``t1 = (a t2 + b) / (c t2 + d)``.
+
+    Each overlap lists its two ends with increasing ``t1``; ``t2[k]`` and ``points[k]``
+    belong to the end ``t1[k]``.
+    """
     if exc.mapping is None or not exc.t2_intervals:
         return []
     a, b, c, d = exc.mapping
     out = []
     for lo, hi in exc.t2_intervals:
-        t1 = sorted(((a * lo + b) / (c * lo + d), (a * hi + b) / (c * hi + d)))
-        out.append({"t1": [algebraic(x) for x in t1], "t2": [algebraic(lo), algebraic(hi)]})
+        ends = sorted(((a * t2 + b) / (c * t2 + d), t2) for t2 in (lo, hi))
+        entry = {"t1": [algebraic(t1) for t1, _ in ends], "t2": [algebraic(t2) for _, t2 in ends]}
+        with_f64(entry, "points", [list(curve2.evaluate(t2)) for _, t2 in ends])
+        out.append(entry)
     return out
 
 

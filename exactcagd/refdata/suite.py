@@ -1,0 +1,229 @@
+"""``exactcagd refdata``: one kind to a JSON Lines file, or the standard suite to a folder.
+
+``exactcagd refdata KIND [--count N --seed S --degree D --family F --out FILE]`` streams
+``N`` records of one family (default ``random``; ``--family all``: ``N`` of each) to
+``FILE`` (default stdout).  ``exactcagd refdata suite --out DIR`` writes the standard
+suite: every kind, random records and every hard family, one ``<kind>.jsonl`` each,
+the JSON Schemas under ``schemas/`` and ``manifest.json``.  Output is byte-identical
+for ``--jobs 1``, ``--jobs N`` and ``--dask`` (records are pure functions of their id
+and are written in index order).
+
+Input is checked before any work: unknown kind or family, degrees outside
+``1..40``, a count outside ``1..10^7``, an output path that is a directory, a device
+or in a missing folder all raise :class:`exactcagd.errors.InputError` /
+:class:`exactcagd.errors.OutputError` naming the argument.
+
+>>> import tempfile, pathlib, json
+>>> out = pathlib.Path(tempfile.mkdtemp()) / "suite"
+>>> manifest = write_suite(out, seed=0, count=1, kinds=["roots"], jobs=1)
+>>> manifest["counts"]["roots"]["random"], (out / "roots.jsonl").exists()
+(1, True)
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+from ..errors import InputError
+from ..outputs import atomic_write_text, check_output_dir, check_output_file, staged_dir
+from .kinds import KINDS, MAX_DEGREE, kind_named
+from .manifest import build_manifest, manifest_text, schema_path
+from .stream import Progress, ordered_lines, plan_batches
+
+__all__ = ["STANDARD_COUNTS", "MAX_COUNT", "parse_degrees", "check_count", "write_kind", "write_suite", "cmd_refdata"]
+
+MAX_COUNT = 10_000_000
+MAX_JOBS = 256
+
+#: Records per family in the standard suite: ``(random, each hard family)`` per kind,
+#: sized so the whole suite (~3,700 records) takes about a minute on 2 cores.
+STANDARD_COUNTS = {
+    "curve_eval": (300, 40),
+    "surface_eval": (300, 40),
+    "bspline_eval": (300, 40),
+    "knot_insertion": (300, 40),
+    "bezier_extraction": (300, 40),
+    "degree_elevation": (300, 40),
+    "subdivision": (300, 40),
+    "compose": (200, 40),
+    "implicitize": (200, 40),
+    "inversion": (60, 20),
+    "intersect": (100, 20),
+    "roots": (300, 40),
+}
+#: Families too slow for the standard counts get at most this many records.
+_SLOW_FAMILY_CAP = {("intersect", "weights_wide"): 8, ("curve_eval", "high_degree"): 20, ("surface_eval", "high_degree"): 10}
+
+
+def parse_degrees(text, kind: str) -> tuple:
+    """``"3"`` or ``"2,1,2"`` (``None``: the kind's default) -> tuple of degrees in ``1..40``."""
+    spec = kind_named(kind)
+    if text is None:
+        return spec.default_degrees
+    try:
+        degrees = tuple(int(x) for x in str(text).split(","))
+    except ValueError:
+        raise InputError(f"--degree: expected integers like 3 or 2,1,2, got {text!r}") from None
+    if not 1 <= len(degrees) <= 3 or any(not 1 <= d <= MAX_DEGREE for d in degrees):
+        raise InputError(f"--degree: one to three degrees, each in 1..{MAX_DEGREE}, got {text!r}")
+    return degrees
+
+
+def check_count(count, argument: str = "--count") -> int:
+    if isinstance(count, bool) or not isinstance(count, int) or not 1 <= count <= MAX_COUNT:
+        raise InputError(f"{argument}: the number of records must be an integer in 1..{MAX_COUNT}, got {count!r}")
+    return count
+
+
+def _check_jobs(jobs) -> int:
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or not 1 <= jobs <= MAX_JOBS:
+        raise InputError(f"--jobs: expected an integer in 1..{MAX_JOBS}, got {jobs!r}")
+    return jobs
+
+
+def _families(kind: str, family) -> list:
+    spec = kind_named(kind)
+    if family in (None, "random"):
+        return ["random"]
+    if family == "all":
+        return list(spec.families)
+    if family not in spec.families:
+        raise InputError(f"--family: kind {kind!r} has no family {family!r}; choose one of {', '.join(spec.families)} or all")
+    return [family]
+
+
+def _progress_enabled(progress) -> bool:
+    return bool(progress) if progress is not None else sys.stderr.isatty()
+
+
+def _stream_to(handle, lines) -> tuple[int, str]:
+    """Write lines (each + newline) to a binary handle; return (records, sha256)."""
+    digest = hashlib.sha256()
+    n = 0
+    for line in lines:
+        data = (line + "\n").encode("ascii")
+        handle.write(data)
+        digest.update(data)
+        n += 1
+    return n, digest.hexdigest()
+
+
+def write_kind(out, kind: str, count: int, seed: int = 0, degrees=None, family=None, jobs: int = 1, dask: bool = False, scheduler=None, progress=None) -> int:
+    """Stream ``count`` records of ``kind`` (per family) to the file ``out`` (``"-"``: stdout).
+
+    The file appears atomically when complete (temporary file in the same folder,
+    then rename).  Returns the number of records written.
+    """
+    spec = kind_named(kind)
+    check_count(count)
+    jobs = _check_jobs(jobs)
+    if isinstance(degrees, (tuple, list)):
+        degrees = ",".join(map(str, degrees))
+    degrees = parse_degrees(degrees, kind)
+    families = _families(kind, family)
+    target = check_output_file(out)
+    specs = [b for f in families for b in plan_batches(spec.name, f, count, seed, degrees, jobs)]
+    bar = Progress(count * len(families), kind, _progress_enabled(progress))
+    lines = ordered_lines(specs, jobs=jobs, dask=dask, scheduler=scheduler, progress=bar)
+    try:
+        if target == "-":
+            n = 0
+            for line in lines:
+                sys.stdout.write(line + "\n")
+                n += 1
+            sys.stdout.flush()
+            return n
+        fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+        try:
+            with os.fdopen(fd, "wb") as handle:
+                n, _ = _stream_to(handle, lines)
+            os.chmod(tmp, 0o644)
+            check_output_file(target)  # again: the path may have changed while we wrote
+            os.replace(tmp, target)
+        except BaseException:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+            raise
+        return n
+    finally:
+        bar.close()
+
+
+def suite_plan(count=None, kinds=None) -> dict:
+    """``{kind: {family: records}}`` of the standard suite (``count``: the same count for every family)."""
+    chosen = list(KINDS) if kinds is None else [kind_named(k).name for k in kinds]
+    plan = {}
+    for kind in chosen:
+        random_n, hard_n = STANDARD_COUNTS[kind]
+        per_family = {}
+        for family in KINDS[kind].families:
+            n = count if count is not None else (random_n if family == "random" else min(hard_n, _SLOW_FAMILY_CAP.get((kind, family), hard_n)))
+            per_family[family] = n
+        plan[kind] = per_family
+    return plan
+
+
+def write_suite(out, seed: int = 0, count=None, kinds=None, jobs: int = 1, dask: bool = False, scheduler=None, progress=None) -> dict:
+    """Write the standard suite into the folder ``out`` (built in a staging folder, renamed in when complete).
+
+    Returns the manifest.
+    """
+    target = check_output_dir(out)
+    if count is not None:
+        check_count(count)
+    jobs = _check_jobs(jobs)
+    plan = suite_plan(count, kinds)
+    files = {}
+    with staged_dir(target) as stage:
+        (stage / "schemas").mkdir()
+        for kind, per_family in plan.items():
+            shutil.copyfile(schema_path(kind), stage / "schemas" / f"{kind}.schema.json")
+            degrees = KINDS[kind].default_degrees
+            specs = [b for family, n in per_family.items() for b in plan_batches(kind, family, n, seed, degrees, jobs)]
+            bar = Progress(sum(per_family.values()), f"{kind:<18}", _progress_enabled(progress))
+            try:
+                with open(stage / f"{kind}.jsonl", "wb") as handle:
+                    n, digest = _stream_to(handle, ordered_lines(specs, jobs=jobs, dask=dask, scheduler=scheduler, progress=bar))
+            finally:
+                bar.close()
+            files[f"{kind}.jsonl"] = {"kind": kind, "records": n, "sha256": digest}
+        manifest = build_manifest(seed, list(plan), plan, files)
+        atomic_write_text(stage / "manifest.json", manifest_text(manifest))
+    return manifest
+
+
+def cmd_refdata(args) -> int:
+    """The ``refdata`` subcommand (see the module docstring)."""
+    fmt = getattr(args, "format", "jsonl")
+    if args.kind == "suite":
+        if fmt != "jsonl":
+            raise InputError("--format: a suite is written as JSON Lines; use --format bezier with the intersect or implicitize kind")
+        if args.out in (None, "-"):
+            raise InputError("--out: refdata suite needs an output folder (--out DIR)")
+        count = None if args.count is None else check_count(args.count)
+        manifest = write_suite(args.out, seed=args.seed, count=count, jobs=args.jobs, dask=args.dask, scheduler=args.scheduler, progress=args.progress)
+        total = sum(f["records"] for f in manifest["files"].values())
+        print(f"wrote {total} record(s) of {len(manifest['kinds'])} kinds to {args.out}", file=sys.stderr)
+        return 0
+    kind = kind_named(args.kind).name
+    count = 10 if args.count is None else args.count
+    if fmt == "bezier":
+        from .formats import write_bezier_fixtures
+
+        if args.out in (None, "-"):
+            raise InputError("--out: --format bezier writes curves.json and curve_intersections.json into a folder (--out DIR)")
+        n = write_bezier_fixtures(args.out, kind, count, seed=args.seed, degrees=args.degree, family=args.family, jobs=args.jobs, dask=args.dask, scheduler=args.scheduler, progress=args.progress)
+        print(f"wrote {n} {kind} case(s) in the bezier fixture layout to {args.out}", file=sys.stderr)
+        return 0
+    if fmt != "jsonl":
+        raise InputError(f"--format: expected jsonl or bezier, got {fmt!r}")
+    out = "-" if args.out is None else args.out
+    n = write_kind(out, kind, count, seed=args.seed, degrees=args.degree, family=args.family, jobs=args.jobs, dask=args.dask, scheduler=args.scheduler, progress=args.progress)
+    if out != "-":
+        print(f"wrote {n} record(s) to {out}", file=sys.stderr)
+    return 0
