@@ -48,3 +48,11 @@ class OutputError(InputError):
 
 class NotSupportedError(ExactCAGDError, NotImplementedError):
     """The construction exists in principle but this case is not supported."""
+
+
+class LimitError(ExactCAGDError):
+    """The estimated work or size of a request exceeds a documented resource limit.
+
+    Raised before the work starts; the message names the argument, the estimate, the
+    limit and how to raise it (:mod:`exactcagd.limits`).
+    """

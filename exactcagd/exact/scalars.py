@@ -24,6 +24,7 @@ import importlib.abc
 import importlib.util
 import math
 import numbers
+import re
 import sys
 import threading
 from fractions import Fraction
@@ -32,6 +33,7 @@ import flint
 import gmpy2
 from gmpy2 import mpq, mpz
 
+from .. import limits
 from ..errors import InexactInputError, InputError
 
 __all__ = [
@@ -48,6 +50,7 @@ __all__ = [
     "rational_str",
     "to_float",
     "to_count",
+    "to_tolerance",
 ]
 
 #: The exact scalar type used throughout the exact layer.
@@ -146,9 +149,13 @@ def to_rational(x, *, policy: str | None = None, where: str = "value") -> Ration
         return x
     if isinstance(x, bool):
         raise InputError(f"{where}: booleans are not numbers here ({x!r})")
+    if isinstance(x, (bytes, bytearray, memoryview)):
+        raise InputError(f"{where}: bytes are not numbers here ({x!r}); give an int, a Fraction or a str")
     if isinstance(x, (int, type(mpz(0)))):
+        _check_bits(x, 1, where)
         return mpq(x)
     if isinstance(x, Fraction):
+        _check_bits(x.numerator, x.denominator, where)
         return mpq(x.numerator, x.denominator)
     if isinstance(x, float):
         return _from_float(x, policy, where)
@@ -183,19 +190,65 @@ def to_rational(x, *, policy: str | None = None, where: str = "value") -> Ration
     raise InputError(f"{where}: cannot convert {x!r} of type {type(x).__name__} to an exact rational")
 
 
+_INTEGER = re.compile(r"\s*([+-]?)([0-9](?:_?[0-9])*)\s*")
+_DECIMAL = re.compile(
+    r"\s*([+-]?)(?=[0-9]|\.[0-9])([0-9](?:_?[0-9])*)?(?:\.([0-9](?:_?[0-9])*)?)?(?:[eE]([+-]?[0-9](?:_?[0-9])*))?\s*"
+)
+
+
 def _from_string(s: str, where: str) -> Rational:
+    """``"p/q"`` or an exact decimal (``"-1.25e-3"``), digits read by gmpy2 (no 4300-digit
+    cap as with ``int(str)``), the size bounded first (:func:`_check_number_string`)."""
     text = s.strip()
     if text.lower().lstrip("+-") in {"nan", "inf", "infinity"}:
         raise InexactInputError(f"{where}: {s!r} is not a finite number")
+    _check_number_string(text, where)
+    num_text, slash, den_text = text.partition("/")
+    if slash:
+        num, den = _INTEGER.fullmatch(num_text), _INTEGER.fullmatch(den_text)
+        if num is None or den is None:
+            raise InputError(f"{where}: cannot parse {_short_repr(s)} as an exact rational")
+        denominator = _digits(den)
+        if denominator == 0:
+            raise InputError(f"{where}: {_short_repr(s)} has a zero denominator")
+        return mpq(_digits(num), denominator)
+    match = _DECIMAL.fullmatch(text)
+    if match is None:
+        raise InputError(f"{where}: cannot parse {_short_repr(s)} as an exact rational")
+    sign, whole, fraction, exponent = match.groups()
+    fraction = (fraction or "").replace("_", "")
+    mantissa = mpz((whole or "0").replace("_", "") + fraction)
+    exp = (int(exponent.replace("_", "")) if exponent else 0) - len(fraction)
+    value = mpq(mantissa * mpz(10) ** exp) if exp >= 0 else mpq(mantissa, mpz(10) ** -exp)
+    return -value if sign == "-" else value
+
+
+def _digits(match) -> mpz:
+    value = mpz(match.group(2).replace("_", ""))
+    return -value if match.group(1) == "-" else value
+
+
+_LOG2_10 = 3.3219280948873626
+
+
+def _check_number_string(text: str, where: str) -> None:
+    """Bound the size of the number a string spells before it is built: ``"1e100000000"``
+    is 11 characters but a 332-million-bit integer (limit ``max_input_bits``)."""
+    mantissa, _, exponent = text.lower().partition("e")
+    digits = sum(ch.isdigit() for ch in mantissa)
     try:
-        if "/" in text:
-            num, den = text.split("/")
-            value = Fraction(int(num.strip()), int(den.strip()))
-        else:
-            value = Fraction(text)  # decimal strings are exact decimals
-    except (ValueError, ZeroDivisionError) as exc:
-        raise InputError(f"{where}: cannot parse {s!r} as an exact rational ({exc})") from None
-    return mpq(value.numerator, value.denominator)
+        exp = abs(int(exponent)) if exponent and len(exponent) <= 40 else (0 if not exponent else None)
+    except ValueError:
+        return  # not a number: Fraction's own parser reports it
+    if exp is None:
+        raise InputError(f"{where}: exponent of {text[:40]!r}... is absurdly long")
+    limits.check("max_input_bits", int((digits + exp) * _LOG2_10), f"{where} = {text[:40]!r}")
+
+
+def _check_bits(num: int, den: int, where: str) -> None:
+    bits = max(num.bit_length(), den.bit_length())
+    if bits > 4096:  # the common case costs two bit_length calls
+        limits.check("max_input_bits", bits, where)
 
 
 def _from_sympy(x, policy: str, where: str) -> Rational:
@@ -289,8 +342,69 @@ def to_count(x, *, where: str = "count", error: type = InputError) -> int:
     3
     """
     if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < 0:
-        raise error(f"{where} must be a non-negative integer, got {x!r}")
+        raise error(f"{where} must be a non-negative integer, got {_short_repr(x)}")
     return int(x)
+
+
+def _short_repr(x, limit: int = 80) -> str:
+    """``repr(x)`` cut to ``limit`` characters (a 10^5000 argument must not flood a message)."""
+    try:
+        text = repr(x)
+    except Exception:  # noqa: BLE001 - a broken __repr__ must not hide the real error
+        return f"<{type(x).__name__}>"
+    return text if len(text) <= limit else f"{text[:limit - 20]}...({len(text)} chars)"
+
+
+def to_tolerance(value, name: str = "tol") -> float:
+    """A tolerance (a positive, finite width) as the ``float`` the float methods compare with.
+
+    Accepted: ``int``, ``float``, ``Fraction``, ``gmpy2``/``flint``/numpy/sympy rationals and
+    number strings (``"1e-9"``, ``"1/1024"``); a non-float is converted exactly and then
+    rounded to the nearest float (:func:`to_float`).  A tolerance is a float parameter by
+    nature, so floats are accepted under either float policy.
+
+    Refused with :class:`~exactcagd.errors.InputError` naming ``name``: booleans, bytes,
+    ``None``, strings that are not numbers, zero, negative values, NaN and infinities,
+    symbols and irrational numbers (``sympy.pi``: convert explicitly with ``float(pi)`` if
+    that is what you mean), and values whose nearest float is 0 or infinite (``10**-400``,
+    ``10**400``), which no float comparison can honour.
+
+    Parameters
+    ----------
+    value : number
+        The tolerance.
+    name : str
+        Name of the argument, used in error messages.
+
+    Returns
+    -------
+    float
+        ``0 < tol < inf``.
+
+    Examples
+    --------
+    >>> to_tolerance("1/1024")
+    0.0009765625
+    >>> to_tolerance(True)
+    Traceback (most recent call last):
+    ...
+    exactcagd.errors.InputError: tol must be a positive finite number, got True (a bool)
+    """
+    if isinstance(value, bool):
+        raise InputError(f"{name} must be a positive finite number, got {value!r} (a bool)")
+    if isinstance(value, float):
+        tol = value
+    else:
+        try:
+            tol = to_float(to_rational(value, policy="exact", where=name))
+        except InputError as exc:
+            raise InputError(f"{name} must be a positive finite number, got {_short_repr(value)} ({exc})") from None
+    if not (tol > 0 and math.isfinite(tol)):
+        raise InputError(
+            f"{name} must be a positive finite number, got {_short_repr(value)}"
+            + (" (its nearest float is 0.0)" if tol == 0 and not isinstance(value, float) and value != 0 else "")
+        )
+    return tol
 
 
 def to_fraction(x: Rational) -> Fraction:
@@ -335,9 +449,18 @@ def to_float(x: Rational) -> float:
     """The float64 nearest to the exact rational ``x`` (correctly rounded, ties to even).
 
     Python's ``int / int`` true division is correctly rounded, which makes this the
-    reference for the float companions of exact outputs.
+    reference for the float companions of exact outputs.  Rule for values beyond the
+    float range: they round to ``inf`` / ``-inf``, as IEEE 754 round-to-nearest does
+    (where Python's division raises ``OverflowError``); tiny values round to ``0.0``.
+
+    >>> to_float(mpq(1, 3)), to_float(mpq(-10**400))
+    (0.3333333333333333, -inf)
     """
-    return int(x.numerator) / int(x.denominator)
+    num, den = int(x.numerator), int(x.denominator)
+    try:
+        return num / den
+    except OverflowError:
+        return math.inf if num > 0 else -math.inf
 
 
 # ----------------------------------------------------------------------------- sympy bridge

@@ -1,0 +1,159 @@
+"""Resource limits (exactcagd.limits), tolerances and the size guards of exact input.
+
+References are independent: Python's Fraction for the parsed values, IEEE 754 facts
+(``sys.float_info``) for the float rules, the arithmetic of the estimates by hand.
+"""
+
+import math
+import sys
+import threading
+from fractions import Fraction
+
+import pytest
+import sympy
+from gmpy2 import mpq
+from hypothesis import given
+from hypothesis import strategies as st
+
+from exactcagd import limits
+from exactcagd.errors import ExactCAGDError, InputError, LimitError
+from exactcagd.exact.scalars import to_count, to_float, to_rational, to_tolerance
+
+
+# ---------------------------------------------------------------- limits table
+def test_check_names_estimate_limit_and_how_to_raise():
+    with pytest.raises(LimitError) as info:
+        limits.check("max_degree", 1001, "elevate(r=998)")
+    message = str(info.value)
+    assert "elevate(r=998)" in message and "1001" in message and "1000" in message
+    assert "limits.raised(max_degree=" in message
+    assert issubclass(LimitError, ExactCAGDError)
+
+
+def test_raised_is_scoped_and_restores():
+    assert limits.get("max_degree") == limits.DEFAULTS["max_degree"]
+    with limits.raised(max_degree=5):
+        assert limits.get("max_degree") == 5
+        with limits.raised(max_degree=None):
+            limits.check("max_degree", 10**9, "unlimited")
+        with pytest.raises(LimitError):
+            limits.check("max_degree", 6, "x")
+    assert limits.get("max_degree") == limits.DEFAULTS["max_degree"]
+
+
+def test_raised_is_per_thread():
+    seen = []
+    with limits.raised(max_degree=7):
+        worker = threading.Thread(target=lambda: seen.append(limits.get("max_degree")))
+        worker.start()
+        worker.join()
+    assert seen == [limits.DEFAULTS["max_degree"]]
+
+
+def test_set_limits_process_wide():
+    try:
+        limits.set_limits(max_control_points=3)
+        with pytest.raises(LimitError):
+            limits.check("max_control_points", 4, "points")
+    finally:
+        limits.set_limits(max_control_points=limits.DEFAULTS["max_control_points"])
+
+
+@pytest.mark.parametrize("bad", [{"max_degre": 3}, {"max_degree": -1}, {"max_degree": True}, {"max_degree": 2.5}])
+def test_bad_limit_settings_are_refused(bad):
+    with pytest.raises(InputError):
+        limits.set_limits(**bad)
+    with pytest.raises(InputError):
+        with limits.raised(**bad):
+            pass
+
+
+# ---------------------------------------------------------------- to_tolerance
+@pytest.mark.parametrize(
+    "value, expected",
+    [(1e-9, 1e-9), ("1e-9", 1e-9), ("1/1024", 2.0**-10), (1, 1.0), (Fraction(1, 3), 1 / 3), (sympy.Rational(1, 8), 0.125)],
+)
+def test_tolerance_accepted(value, expected):
+    assert to_tolerance(value) == expected
+
+
+@pytest.mark.parametrize(
+    "value",
+    [True, False, b"1e-9", bytearray(b"1"), None, "abc", "", 0, 0.0, -1e-9, "-1", math.nan, math.inf, -math.inf,
+     sympy.pi, sympy.Symbol("x"), sympy.sqrt(2), Fraction(1, 10**400), 10**400, [1e-9], 1j],
+)
+def test_tolerance_refused_naming_the_argument(value):
+    with pytest.raises(InputError, match="^eps must be a positive finite number"):
+        to_tolerance(value, name="eps")
+
+
+def test_tolerance_accepts_floats_under_the_reject_policy():
+    from exactcagd.exact.scalars import float_policy
+
+    with float_policy("reject"):
+        assert to_tolerance(1e-6) == 1e-6
+
+
+# ---------------------------------------------------------------- to_rational / to_count / to_float
+@pytest.mark.parametrize("value", [b"3", bytearray(b"3"), memoryview(b"3"), True])
+def test_to_rational_refuses_bytes_and_bools_naming_the_argument(value):
+    with pytest.raises(InputError, match="^weight"):
+        to_rational(value, where="weight")
+
+
+@pytest.mark.parametrize("value", [True, False, b"3", 2.0, -1, "3", None, sympy.Integer(3) / 2])
+def test_to_count_refuses(value):
+    with pytest.raises(InputError, match="r must be a non-negative integer"):
+        to_count(value, where="r")
+
+
+def test_to_count_message_of_a_huge_integer_stays_short():
+    with pytest.raises(InputError) as info:
+        to_count(-(10**5000), where="r")
+    assert len(str(info.value)) < 200
+
+
+def test_huge_integers_are_exact_not_overflow():
+    big = 10**5000
+    assert to_rational(big) == big
+    assert to_rational("1" + "0" * 5000) == big  # no 4300-digit cap of int(str)
+    assert to_rational("1/1" + "0" * 5000) * big == 1
+    assert to_rational(f"1e5000") == big
+
+
+def test_to_float_rule_beyond_the_float_range():
+    # IEEE 754 round-to-nearest: beyond the largest finite float by half an ulp -> inf
+    top = Fraction(sys.float_info.max)
+    assert to_float(mpq(10**5000)) == math.inf
+    assert to_float(mpq(-(10**5000), 3)) == -math.inf
+    assert to_float(mpq(1, 10**5000)) == 0.0
+    assert to_float(mpq(top.numerator)) == sys.float_info.max
+
+
+@given(st.integers(-(10**30), 10**30), st.integers(1, 10**30), st.integers(-40, 40))
+def test_decimal_strings_parse_like_fraction(p, q, e):
+    # independent reference: Python's Fraction parser
+    text = f"{p}.{q}e{e}"
+    ref = Fraction(text)
+    assert to_rational(text) == mpq(ref.numerator, ref.denominator)
+    assert to_rational(f"{p}/{q}") == mpq(p, q)
+
+
+@pytest.mark.parametrize("text", ["1e100000000", "1e-100000000", "9" * 400_000, "1/" + "7" * 400_000])
+def test_number_strings_are_bounded_before_they_are_built(text):
+    with pytest.raises(LimitError, match="max_input_bits"):
+        to_rational(text, where="x")
+
+
+def test_input_bits_limit_on_integers_and_raising_it():
+    big = 1 << 1_000_001
+    with pytest.raises(LimitError, match="max_input_bits"):
+        to_rational(big)
+    with limits.raised(max_input_bits=2_000_000):
+        assert to_rational(big) == big
+
+
+@pytest.mark.parametrize("text", ["abc", "1e", "0x10", "1.2/3", "1/0", "_1", "1__0", ".", "e5", "1e" + "9" * 60])
+def test_malformed_number_strings(text):
+    with pytest.raises(InputError):
+        to_rational(text)
