@@ -70,31 +70,30 @@ def test_run_writes_exact_outputs_and_reruns_from_cache(tmp_path, capsys):
 
 
 def test_readme_scene_reruns_from_cache(tmp_path, capsys):
-    """The README's main command, twice: the second run loads every product from the cache
-    (the approximation's Q(sqrt D) segments included: they once failed to unpickle) and
-    writes the same exact JSON."""
+    """The README's main command, twice: the second run takes every product and picture from the
+    cache and writes the same bytes (exact JSON, pictures, summary; only timings.json differs)."""
     from pathlib import Path
 
     scene = Path(__file__).resolve().parents[1] / "examples" / "scenes" / "hill_trim.toml"
     out_dir = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out_dir)]) == 0
-    first = {p.name: p.read_text() for p in (out_dir / "hill_trim").glob("*.json") if p.name != "summary.json"}
+    first = {p.name: p.read_bytes() for p in (out_dir / "hill_trim").iterdir() if p.name != "timings.json"}
     capsys.readouterr()
     assert main(["run", str(scene), "--out", str(out_dir)]) == 0
-    products = [r for r in json.loads((out_dir / "hill_trim" / "summary.json").read_text())["products"]]
-    assert products and all(r["status"] == "cached" for r in products), products
-    second = {p.name: p.read_text() for p in (out_dir / "hill_trim").glob("*.json") if p.name != "summary.json"}
-    assert second == first and "trim_parabola.json" in first
+    products = [r for r in json.loads((out_dir / "hill_trim" / "timings.json").read_text())["products"]]
+    assert len(products) == 7 and all(r["status"] == "cached" for r in products), products
+    second = {p.name: p.read_bytes() for p in (out_dir / "hill_trim").iterdir() if p.name != "timings.json"}
+    assert second == first and {"trim_parabola.json", "overview.png", "approximation.png", "summary.json"} <= set(first)
 
 
-def test_failing_product_writes_nothing(tmp_path):
+def test_curve_leaving_the_domain_is_refused_before_any_work(tmp_path):
+    """A trim curve leaving the surface domain is a scene error when the runner is built
+    (it used to surface only when the composition ran, after other products)."""
     bad = copy.deepcopy(SCENE)
-    # a trim curve leaving the surface domain makes the composition fail after the patches product ran
     bad["curves"]["k"]["control_points"] = [["1/8", "1/8"], ["3", "3/8"], ["3/8", "1/8"]]
-    runner = Runner(parse_scene(bad), tmp_path / "out")
-    with pytest.raises(ExactCAGDError):
-        runner.run(progress=lambda line: None)
-    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.json"))
+    with pytest.raises(ExactCAGDError, match=r"products\[0\]\.only_crossed_by: .*leaves the parameter domain"):
+        Runner(parse_scene(bad), tmp_path / "out")
+    assert not (tmp_path / "out").exists()
 
 
 def test_approximation_product_is_exact_with_float_companions(tmp_path):

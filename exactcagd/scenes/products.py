@@ -9,12 +9,14 @@ Library calls are imported lazily so planning stays cheap.
 from __future__ import annotations
 
 import io
+import json
 
 from ..errors import NotSupportedError
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve, BSplineSurface
-from .serialize import dumps
+from .checks import result_degree
+from .serialize import to_json_value
 from .spec import DEFAULT_APPROXIMATION
 
 __all__ = ["references", "plan", "compute", "render"]
@@ -87,18 +89,12 @@ def _plan_on_surface(surface, curve, product) -> tuple[list[str], list[str]]:
         if total > len(crossed):
             skips.append(f"{total - len(crossed)} of {total} patches are not crossed (never extracted)")
     if product["kind"] == "image_curve":
-        degree = _degree_estimate(surface, curve)
+        degree = result_degree(surface, curve)
         needs.append(f"exact composition, stored degree {degree} per piece (isoparametric pieces use the shortcut)")
     else:
         needs.append(f"{product.get('method', DEFAULT_APPROXIMATION)} approximation to tol {product['tol']}")
         skips.append("exact output of the composed curve (only its certified distance is used)")
     return needs, skips
-
-
-def _degree_estimate(surface, curve) -> int:
-    l, m = surface.degree
-    n = curve.degree
-    return n * (l + m)
 
 
 def _surface_curve_pairs(product, objects) -> list[tuple[str, str]]:
@@ -181,11 +177,20 @@ def _compute_approximation(surface, curve, product):
 
 
 # ----------------------------------------------------------------------------- rendering
-def render(product: dict, result, runner, results: dict) -> dict:
-    """Output files of one product: ``{suffix: bytes or str}``."""
+def render(product: dict, result, runner, results: dict) -> tuple[dict, dict]:
+    """Output files of one product and the run-dependent data kept out of them.
+
+    Returns ``({suffix: bytes}, timings)``: the exact JSON (or the PNG of a picture), and
+    the wall-clock timings a result carries (they go to ``timings.json``, so that two
+    runs of one scene write byte-identical outputs).
+    """
     if product["kind"] == "picture":
-        return {".png": _picture(product, runner, results)}
-    return {".json": dumps({"product": product, "result": result})}
+        return {".png": _picture(product, runner, results)}, {}
+    value = to_json_value({"product": product, "result": result})
+    timings = {}
+    if isinstance(value["result"], dict) and isinstance(value["result"].get("timings"), dict):
+        timings = value["result"].pop("timings")
+    return {".json": json.dumps(value, indent=1, allow_nan=False).encode()}, timings
 
 
 def _picture(product: dict, runner, results: dict) -> bytes:
@@ -194,6 +199,7 @@ def _picture(product: dict, runner, results: dict) -> bytes:
     buffer = io.BytesIO()
     specs = {p["name"]: p for p in runner.scene.products}
     fig = pictures.draw(product, runner.objects, results, specs)
-    fig.savefig(buffer, format="png", dpi=110)
+    # no software/date stamp: the same scene gives the same bytes
+    fig.savefig(buffer, format="png", dpi=110, metadata={"Software": None})
     pictures.close(fig)
     return buffer.getvalue()

@@ -1,20 +1,29 @@
 """``exactcagd plan`` and ``exactcagd run``: the lazy scene runner.
 
-Steps: validate the whole scene and build its exact objects (nothing is computed
-before the scene is known to be sound) -> plan each product (what it needs, what it
-skips and why, whether it is cached) -> compute the products not cached, with a
-progress line each -> write every output atomically at the end (exact JSON with
-float companions, PNG pictures, ``summary.json``).  Results are cached by a content
-hash of the product and the objects it uses, so an unchanged scene reruns instantly.
+Steps:
+
+1. validate the whole scene (:mod:`~exactcagd.scenes.spec`), build its exact objects and
+   check every product against them (:mod:`~exactcagd.scenes.checks`); check ``--out``.
+   Nothing is computed before the scene is known to be sound.
+2. plan each product: what it needs, what it skips and why, whether it is cached.
+3. run: in a staging folder beside ``<out>/<scene>`` (:func:`exactcagd.outputs.staged_dir`),
+   each product is taken from the cache or computed, rendered (exact JSON with float
+   companions, PNG pictures), written and cached *as soon as it is done*.  A failing
+   product is reported by name and the others still complete; ``summary.json`` lists
+   every product and every failure.  The staging folder is renamed onto ``<out>/<scene>``
+   at the end, so after an interrupt the folder holds the previous complete outputs or
+   the new complete ones, never a mixture; finished products stay in the cache.
+
+Rendered outputs, pictures included, are cached by content (:mod:`~exactcagd.scenes.cache`):
+a rerun of an unchanged scene copies bytes and computes nothing.  Wall-clock times go to
+``timings.json``; every other file of two runs of one scene is byte-identical.
 
 >>> # exactcagd run examples/scenes/hill_trim.toml --out out
 """
 
 from __future__ import annotations
 
-import hashlib
 import json
-import pickle
 import sys
 import time
 from dataclasses import dataclass, field
@@ -22,12 +31,14 @@ from pathlib import Path
 
 from .. import __version__
 from ..errors import ExactCAGDError, InputError
+from ..outputs import atomic_write_bytes, check_output_dir, staged_dir
 from . import products as handlers
 from .build import build_curve, build_surface
-from .serialize import atomic_write_bytes
+from .cache import ProductCache, product_key
+from .checks import check_products
 from .spec import Scene, SceneError, load_scene
 
-__all__ = ["Runner", "cmd_plan", "cmd_run"]
+__all__ = ["Runner", "RunReport", "cmd_plan", "cmd_run"]
 
 
 @dataclass
@@ -39,16 +50,38 @@ class PlanItem:
     skips: list[str] = field(default_factory=list)
 
 
+@dataclass
+class RunReport:
+    """What a run did: per product ``status`` (computed / cached / failed), ``seconds``, ``summary`` or ``error``."""
+
+    infos: dict
+    failed: list
+    scene_dir: Path
+
+
+class ProductFailed(ExactCAGDError):
+    """A product could not be computed (the message names it and the cause)."""
+
+
 class Runner:
-    """Holds a validated scene, its exact objects, the plan and the cache location."""
+    """Holds a validated scene, its exact objects, the plan and the cache location.
+
+    Building the runner makes every check that the scene file allows (spec, objects,
+    products against objects); it computes and writes nothing.
+    """
 
     def __init__(self, scene: Scene, out_dir, use_cache: bool = True):
         self.scene = scene
         self.out_dir = Path(out_dir)
         self.scene_dir = self.out_dir / scene.name
         self.cache_dir = self.out_dir / ".cache"
+        self.cache = ProductCache(self.cache_dir)
         self.use_cache = use_cache
         self.objects = self._build_objects()
+        self.warnings = check_products(scene, self.objects)
+        self._specs = {p["name"]: p for p in scene.products}
+        self._keys: dict = {}
+        self.published = False
 
     # ------------------------------------------------------------------ objects
     def _build_objects(self) -> dict:
@@ -59,109 +92,123 @@ class Runner:
             objects[name] = _built(build_curve, spec, name, self.scene.float_policy, f"curves.{name}")
         return objects
 
-    # ------------------------------------------------------------------ planning
-    def cache_key(self, product: dict) -> str:
-        refs = handlers.references(product)
-        specs = {r: self.scene.object_spec(r) for r in refs if r in self.scene.surfaces or r in self.scene.curves}
-        for r in refs:  # a product that uses another product depends on that one's spec too
-            for other in self.scene.products:
-                if other["name"] == r:
-                    specs[r] = other
-        payload = json.dumps(
-            {"version": __version__, "policy": self.scene.float_policy, "product": product, "inputs": specs},
-            sort_keys=True,
-            default=str,
-        )
-        return hashlib.sha256(payload.encode()).hexdigest()[:24]
+    def check_outputs(self, argument: str = "--out") -> None:
+        """Refuse an output folder that cannot be written (a file, /proc/x, ...) before any work."""
+        check_output_dir(self.out_dir, argument=argument)
+        check_output_dir(self.scene_dir, argument=argument)
+        check_output_dir(self.cache_dir, argument=argument)
 
-    def _cache_path(self, key: str) -> Path:
-        return self.cache_dir / f"{key}.pickle"
+    # ------------------------------------------------------------------ planning
+    def _dependencies(self, product: dict) -> list[str]:
+        """Products (not objects) a product uses: the computed results a picture draws."""
+        return [r for r in handlers.references(product) if r in self._specs and self._specs[r]["kind"] != "picture"]
+
+    def cache_key(self, product: dict) -> str:
+        """Content key: the product, the specs of its objects, the keys of its products, the code."""
+        name = product["name"]
+        if name not in self._keys:
+            refs = handlers.references(product)
+            inputs = {r: self.scene.object_spec(r) for r in refs if r in self.scene.surfaces or r in self.scene.curves}
+            dependencies = {r: self.cache_key(self._specs[r]) for r in self._dependencies(product)}
+            self._keys[name] = product_key(product, inputs, dependencies, self.scene.float_policy)
+        return self._keys[name]
 
     def plan(self) -> list[PlanItem]:
         items = []
         for product in self.scene.products:
             key = self.cache_key(product)
-            cached = self.use_cache and self._cache_path(key).is_file()
+            cached = self.use_cache and self.cache.lookup(key) is not None
             needs, skips = handlers.plan(product, self)
             items.append(PlanItem(product, key, cached, needs, skips))
         return items
 
     # ------------------------------------------------------------------ running
-    def run(self, progress=print) -> dict:
-        """Compute every product (cache first); write all outputs at the end.
+    def run(self, progress=print) -> RunReport:
+        """Compute (or copy from the cache) every product; write each one as soon as it is done.
 
-        Each product is snapshotted (pickled) the moment it is computed or loaded: later
-        products may refine its exact numbers in place (an isolating interval narrowed by
-        a float conversion or a comparison), so its JSON is rendered from a copy of the
-        snapshot, and the cache stores the same snapshot. A fresh run and a cached run
-        therefore write identical exact outputs.
+        Returns a :class:`RunReport`; failures are in ``report.failed`` (and in
+        ``summary.json``), not raised.  ``KeyboardInterrupt`` propagates after the staging
+        folder is removed (``self.published`` says whether the outputs were already in place).
         """
-        results, infos, snapshots = {}, {}, {}
+        self.check_outputs()
         plan = self.plan()
-        total = len(plan)
-        for index, item in enumerate(plan, 1):
-            name = item.product["name"]
-            start = time.perf_counter()
-            if item.cached:
-                snapshots[name] = self._cache_path(item.key).read_bytes()
-                result, info = pickle.loads(snapshots[name])
-                status = "cached"
-            else:
-                progress(f"[{index}/{total}] {item.product['kind']:<14} {name} ...")
-                result, info = handlers.compute(item.product, self, results)
-                snapshots[name] = _snapshot(name, result, info)
-                status = "computed"
-            seconds = time.perf_counter() - start
-            info = dict(info, status=status, seconds=round(seconds, 3))
-            results[name], infos[name] = result, info
-            progress(f"[{index}/{total}] {item.product['kind']:<14} {name}: {status} in {seconds:.2f} s")
-        self._write(plan, results, infos, snapshots)
-        return {"results": results, "infos": infos}
+        self._results: dict = {}
+        self._rendered: dict = {}
+        self._failed: dict = {}
+        infos, timings = {}, {}
+        with staged_dir(self.scene_dir) as stage:
+            for index, item in enumerate(plan, 1):
+                name, kind = item.product["name"], item.product["kind"]
+                start = time.perf_counter()
+                if not item.cached:
+                    progress(f"[{index}/{len(plan)}] {kind:<14} {name} ...")
+                try:
+                    files, info, status, extra = self._product(item)
+                except Exception as exc:  # noqa: BLE001 - one failing product must not lose the others
+                    message = _describe(exc)
+                    self._failed[name] = message
+                    infos[name] = {"status": "failed", "error": message}
+                    timings[name] = {"status": "failed", "seconds": round(time.perf_counter() - start, 3)}
+                    progress(f"[{index}/{len(plan)}] {kind:<14} {name}: FAILED: {message}")
+                    continue
+                for suffix, data in files.items():
+                    atomic_write_bytes(stage / f"{name}{suffix}", data)
+                seconds = time.perf_counter() - start
+                infos[name] = {"status": "ok", "summary": info.get("summary", ""), "files": [f"{name}{s}" for s in sorted(files)]}
+                timings[name] = {"status": status, "seconds": round(seconds, 3), **({"steps": extra} if extra else {})}
+                progress(f"[{index}/{len(plan)}] {kind:<14} {name}: {status} in {seconds:.2f} s")
+            summary = {
+                "scene": self.scene.name,
+                "source": self.scene.source,
+                "exactcagd": __version__,
+                "products": [{"name": item.product["name"], "kind": item.product["kind"], **infos[item.product["name"]]} for item in plan],
+                "failed": sorted(self._failed),
+            }
+            atomic_write_bytes(stage / "summary.json", (json.dumps(summary, indent=1) + "\n").encode())
+            report = {"scene": self.scene.name, "products": [{"name": item.product["name"], **timings[item.product["name"]]} for item in plan]}
+            atomic_write_bytes(stage / "timings.json", (json.dumps(report, indent=1) + "\n").encode())
+        self.published = True
+        merged = {name: {**infos[name], **timings[name]} for name in infos}
+        return RunReport(merged, [n for n in infos if n in self._failed], self.scene_dir)
 
-    def _write(self, plan, results, infos, snapshots) -> None:
-        """Write all outputs; each file atomically, cache entries after the outputs."""
-        files = {}
-        for item in plan:
-            name = item.product["name"]
-            blob = snapshots.get(name)
-            own = pickle.loads(blob)[0] if blob is not None else results[name]
-            rendered = handlers.render(item.product, own, self, results)
-            for suffix, data in rendered.items():
-                files[self.scene_dir / f"{name}{suffix}"] = data
-        summary = {
-            "scene": self.scene.name,
-            "source": self.scene.source,
-            "exactcagd": __version__,
-            "products": [
-                {"name": item.product["name"], "kind": item.product["kind"], **_json_safe(infos[item.product["name"]])}
-                for item in plan
-            ],
-        }
-        files[self.scene_dir / "summary.json"] = json.dumps(summary, indent=1).encode()
-        for path, data in files.items():
-            atomic_write_bytes(path, data if isinstance(data, bytes) else data.encode())
+    def _product(self, item: PlanItem):
+        """``(files, info, status, timings)`` of one product: from the cache, or computed and cached."""
         if self.use_cache:
-            for item in plan:
-                blob = snapshots.get(item.product["name"])
-                if not item.cached and blob is not None:
-                    atomic_write_bytes(self._cache_path(item.key), blob)
+            entry = self.cache.lookup(item.key)
+            blobs = entry.read() if entry is not None else None
+            if blobs is not None:
+                return blobs, entry.info, "cached", {}
+        name = item.product["name"]
+        self._result(name)
+        files, info, extra = self._rendered[name]
+        self.cache.store(item.key, files, {"summary": info.get("summary", "")})
+        return files, info, "computed", extra
+
+    def _result(self, name: str):
+        """The exact result of product ``name``, computed (and rendered at once) if not yet in memory.
+
+        A product is rendered right after it is computed: later products may refine its
+        exact numbers in place (an isolating interval narrowed by a comparison), and its
+        output must not depend on what ran after it.
+        """
+        if name in self._results:
+            return self._results[name]
+        if name in self._failed:
+            raise ProductFailed(f"uses product {name!r}, which failed ({self._failed[name]})")
+        product = self._specs[name]
+        for dependency in self._dependencies(product):
+            self._result(dependency)
+        result, info = handlers.compute(product, self, self._results)
+        self._results[name] = result
+        files, extra = handlers.render(product, result, self, self._results)
+        self._rendered[name] = (files, info, extra)
+        return result
 
 
-def _snapshot(name: str, result, info: dict) -> bytes | None:
-    """The pickled (result, info) of a product as computed, or None (reported) if it does not pickle."""
-    try:
-        return pickle.dumps((result, _strip(info)))
-    except (TypeError, AttributeError, pickle.PicklingError) as exc:
-        print(f"note: {name} is not cached ({exc})", file=sys.stderr)
-        return None
-
-
-def _strip(info: dict) -> dict:
-    return {k: v for k, v in info.items() if k not in ("status", "seconds")}
-
-
-def _json_safe(info: dict) -> dict:
-    return json.loads(json.dumps(info, default=str))
+def _describe(exc: Exception) -> str:
+    if isinstance(exc, ExactCAGDError):
+        return f"{type(exc).__name__}: {exc}"
+    return f"internal error {type(exc).__name__}: {exc}"
 
 
 def _built(builder, spec, name, policy, where):
@@ -185,29 +232,51 @@ def _format_plan(runner: Runner, items: list[PlanItem]) -> str:
             lines.append(f"    computes: {need}")
         for skip in item.skips:
             lines.append(f"    skips:    {skip}")
+    for warning in runner.warnings:
+        lines.append(f"warning: {warning}")
     return "\n".join(lines)
 
 
-def cmd_plan(args) -> int:
+def _runner(args) -> Runner:
+    check_output_dir(args.out, argument="--out")
     runner = Runner(load_scene(args.scene), args.out, use_cache=not args.no_cache)
+    runner.check_outputs()
+    return runner
+
+
+def cmd_plan(args) -> int:
+    runner = _runner(args)
     print(_format_plan(runner, runner.plan()))
     return 0
 
 
 def cmd_run(args) -> int:
-    runner = Runner(load_scene(args.scene), args.out, use_cache=not args.no_cache)
+    runner = _runner(args)
     print(_format_plan(runner, runner.plan()))
     start = time.perf_counter()
     try:
-        out = runner.run(progress=lambda line: print(line, flush=True))
-    except ExactCAGDError:
-        raise
-    except KeyboardInterrupt:  # pragma: no cover - nothing was written yet
-        print("interrupted: no output written", file=sys.stderr)
+        report = runner.run(progress=lambda line: print(line, flush=True))
+    except KeyboardInterrupt:
+        if runner.published:
+            print(f"interrupted after the outputs were complete: {runner.scene_dir}/ is written", file=sys.stderr)
+        else:
+            print(
+                f"interrupted: nothing was written to {runner.scene_dir}/ (an older output there is unchanged); "
+                f"products finished before the interrupt are cached in {runner.cache_dir}/ and will be reused",
+                file=sys.stderr,
+            )
         return 130
     print(f"\n{'product':<24} {'kind':<14} {'status':<9} {'time':>8}  summary")
-    for name, info in out["infos"].items():
-        kind = next(p["kind"] for p in runner.scene.products if p["name"] == name)
-        print(f"{name:<24} {kind:<14} {info['status']:<9} {info['seconds']:>7.2f}s  {info.get('summary', '')}")
-    print(f"\nwrote {runner.scene_dir}/ in {time.perf_counter() - start:.2f} s")
+    for item in runner.scene.products:
+        name, info = item["name"], report.infos[item["name"]]
+        print(f"{name:<24} {item['kind']:<14} {info['status']:<9} {info['seconds']:>7.2f}s  {info.get('summary') or info.get('error', '')}")
+    elapsed = time.perf_counter() - start
+    if report.failed:
+        print(
+            f"\nwrote {report.scene_dir}/ in {elapsed:.2f} s: {len(report.failed)} of {len(report.infos)} product(s) failed "
+            f"({', '.join(report.failed)}; see summary.json)",
+            file=sys.stderr,
+        )
+        return 1
+    print(f"\nwrote {report.scene_dir}/ in {elapsed:.2f} s")
     return 0

@@ -55,6 +55,15 @@ LIMITS = {
     "max_grid": 400,
     "max_result_degree": 400,
     "max_samples": 20000,
+    # number strings and integers: digits of the mantissa, size of a decimal exponent
+    "max_number_digits": 1000,
+    "max_exponent": 1000,
+    # height expressions of grid generators (bounded on the syntax tree, before evaluation)
+    "max_expression_chars": 500,
+    "max_expression_nodes": 400,
+    "max_expression_depth": 40,
+    "max_expression_degree": 60,
+    "max_expression_bits": 20000,
 }
 
 NAME = re.compile(r"^[A-Za-z0-9_-]{1,64}$")
@@ -104,16 +113,19 @@ def load_scene(path) -> Scene:
         raise SceneError(f"scene file {str(path)!r} does not exist")
     text = path.read_text()
     if path.suffix == ".toml":
-        import tomllib
+        try:
+            import tomllib
+        except ModuleNotFoundError:  # Python 3.10: tomllib is the standard library's copy of tomli
+            import tomli as tomllib
 
         try:
             data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as exc:
+        except (tomllib.TOMLDecodeError, ValueError, RecursionError) as exc:
             raise SceneError(f"{path}: not valid TOML ({exc})") from None
     elif path.suffix == ".json":
         try:
             data = json.loads(text, parse_constant=_reject_constant)
-        except json.JSONDecodeError as exc:
+        except (json.JSONDecodeError, ValueError, RecursionError) as exc:  # ValueError: integers of > 4300 digits
             raise SceneError(f"{path}: not valid JSON ({exc})") from None
     else:
         raise SceneError(f"{path}: scene files end in .toml or .json")
@@ -193,10 +205,45 @@ def _check_number(x, where: str, policy: str):
 
     if isinstance(x, bool) or not isinstance(x, (int, float, str)):
         raise SceneError(f"{where}: expected a number or 'p/q' string, got {type(x).__name__}")
+    if isinstance(x, int) and x.bit_length() > 4 * LIMITS["max_number_digits"]:
+        raise SceneError(f"{where}: integer with more than {LIMITS['max_number_digits']} digits")
+    if isinstance(x, str):
+        _check_number_size(x, where)
     try:
         return to_rational(x, policy=policy, where=where)
     except InputError as exc:
         raise SceneError(str(exc)) from None
+
+
+_EXPONENT = re.compile(r"[eE]\s*([-+]?\s*[0-9_]+)")
+
+
+def _check_number_size(text: str, where: str) -> None:
+    """Bound a number string before it is converted: ``"1e100000000"`` is refused, not expanded.
+
+    At most ``max_number_digits`` digits and a decimal exponent of at most ``max_exponent``
+    in absolute value (the exact value then has at most digits + exponent digits).
+    """
+    limit = LIMITS["max_number_digits"]
+    if len(text) > 2 * limit + 40:
+        raise SceneError(f"{where}: number string of {len(text)} characters (limit: {limit} digits)")
+    exponent = _EXPONENT.search(text)
+    mantissa = text[: exponent.start()] if exponent else text
+    if sum(c.isdigit() for c in mantissa) > limit:
+        raise SceneError(f"{where}: number with more than {limit} digits")
+    if exponent:
+        digits = exponent.group(1).replace("_", "").replace(" ", "")
+        if len(digits.lstrip("+-")) > 12 or abs(int(digits)) > LIMITS["max_exponent"]:
+            raise SceneError(f"{where}: exponent {exponent.group(1)} outside -{LIMITS['max_exponent']}..{LIMITS['max_exponent']}")
+
+
+def _check_positive(value, where: str, policy: str) -> None:
+    """Weights of rational objects are positive numbers (checked when the scene is read)."""
+    if isinstance(value, list):
+        for i, v in enumerate(value):
+            _check_positive(v, f"{where}[{i}]", policy)
+    elif _check_number(value, where, policy) <= 0:
+        raise SceneError(f"{where}: weights must be positive, got {value!r}")
 
 
 def _shape(value, where: str) -> tuple:
@@ -290,7 +337,7 @@ def _check_surface(spec, where: str, name: str, policy: str) -> dict:
         wshape = _shape(spec["weights"], f"{where}.weights")
         if wshape != shape[:2]:
             raise SceneError(f"{where}.weights: shape {wshape} does not match the net {shape[:2]}")
-        _check_numbers(spec["weights"], f"{where}.weights", policy)
+        _check_positive(spec["weights"], f"{where}.weights", policy)
     if kind == "bezier":
         if max(shape[:2]) - 1 > LIMITS["max_degree"]:
             raise SceneError(f"{where}.control_net: degree {max(shape[:2]) - 1} exceeds {LIMITS['max_degree']}")
@@ -324,7 +371,7 @@ def _check_curve(spec, where: str, name: str, policy: str) -> dict:
     if "weights" in spec:
         if _shape(spec["weights"], f"{where}.weights") != (shape[0],):
             raise SceneError(f"{where}.weights: expected {shape[0]} weights")
-        _check_numbers(spec["weights"], f"{where}.weights", policy)
+        _check_positive(spec["weights"], f"{where}.weights", policy)
     if kind == "bezier" and shape[0] - 1 > LIMITS["max_degree"]:
         raise SceneError(f"{where}.control_points: degree {shape[0] - 1} exceeds {LIMITS['max_degree']}")
     if kind == "bspline":
@@ -337,7 +384,7 @@ def _check_curve(spec, where: str, name: str, policy: str) -> dict:
 def _check_product(spec, where: str, scene: Scene) -> dict:
     _expect_dict(spec, where)
     kind = spec.get("kind")
-    if kind not in PRODUCT_KINDS:
+    if not isinstance(kind, str) or kind not in PRODUCT_KINDS:
         raise SceneError(f"{where}.kind: expected one of {sorted(PRODUCT_KINDS)}, got {kind!r}")
     required, optional = PRODUCT_KINDS[kind]
     _only_keys(spec, required | optional | _COMMON_PRODUCT_KEYS, where)
@@ -350,6 +397,8 @@ def _check_product(spec, where: str, scene: Scene) -> dict:
 
     def need(key, table, what):
         ref = spec[key]
+        if not isinstance(ref, str):
+            raise SceneError(f"{where}.{key}: expected the name of a {what}, got {type(ref).__name__}")
         if ref not in table:
             raise SceneError(f"{where}.{key}: no {what} named {ref!r}")
 
@@ -361,7 +410,7 @@ def _check_product(spec, where: str, scene: Scene) -> dict:
         need("curve", scene.curves, "curve")
     if kind == "intersections":
         refs = spec["curves"]
-        if not (isinstance(refs, list) and len(refs) == 2 and all(r in scene.curves for r in refs)):
+        if not (isinstance(refs, list) and len(refs) == 2 and all(isinstance(r, str) and r in scene.curves for r in refs)):
             raise SceneError(f"{where}.curves: expected two curve names of this scene")
     if kind == "approximation":
         tol = _check_number(spec["tol"], f"{where}.tol", "exact")
@@ -374,11 +423,15 @@ def _check_product(spec, where: str, scene: Scene) -> dict:
         if not isinstance(spec["of"], list) or not spec["of"] or not all(isinstance(r, str) for r in spec["of"]):
             raise SceneError(f"{where}.of: expected a non-empty list of names")
         samples = spec.get("samples", 200)
-        if not isinstance(samples, int) or not 2 <= samples <= LIMITS["max_samples"]:
+        if type(samples) is not int or not 2 <= samples <= LIMITS["max_samples"]:
             raise SceneError(f"{where}.samples: expected an integer in 2..{LIMITS['max_samples']}")
     if kind == "patches" and "only_crossed_by" in spec:
-        if spec["only_crossed_by"] not in scene.curves:
+        if not isinstance(spec["only_crossed_by"], str) or spec["only_crossed_by"] not in scene.curves:
             raise SceneError(f"{where}.only_crossed_by: no curve named {spec['only_crossed_by']!r}")
+    if "reduce" in spec and not isinstance(spec["reduce"], bool):
+        raise SceneError(f"{where}.reduce: expected true or false")
+    if "title" in spec and not (isinstance(spec["title"], str) and len(spec["title"]) <= 200):
+        raise SceneError(f"{where}.title: expected a string of at most 200 characters")
     if kind == "implicit" and spec.get("method", "moving_lines") not in ("resultant", "bezier", "moving_lines"):
         raise SceneError(f"{where}.method: expected resultant, bezier or moving_lines")
     return product
