@@ -349,3 +349,59 @@ def test_cached_float_coefficients_are_read_only():
     for array in module._curve_coefficients(curve, "decasteljau"):
         with pytest.raises(ValueError):
             array[0] = 7.0
+
+
+# ---------------------------------------------------------------------------- default: compiled kernel
+def _numpy_fallback(monkeypatch, curve, ts):
+    import exactcagd.numeric.evaluation as module
+
+    monkeypatch.setattr(module, "KERNEL", False)
+    try:
+        return evaluate(curve, ts, method="horner")
+    finally:
+        monkeypatch.setattr(module, "KERNEL", True)
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(curves(max_degree=25), st.lists(unit_floats, min_size=1, max_size=30))
+def test_default_kernel_is_bit_identical_to_numpy_horner(monkeypatch, curve, ts):
+    """issue 18: the compiled default (numba) does the numpy Horner path's float operations;
+    its values and radii are the same bits, and certified against exact evaluation."""
+    from exactcagd.numeric import _horner_kernel
+
+    if not _horner_kernel.AVAILABLE:
+        pytest.skip("numba not installed: the default runs the numpy path itself")
+    ts = ts + [0.0, 5e-324, 2.0**-1060, 0.5, np.nextafter(0.5, 1.0), 1 - 2.0**-53, 1.0]
+    values, radii = evaluate(curve, ts)
+    ref_values, ref_radii = _numpy_fallback(monkeypatch, curve, ts)
+    assert np.array_equal(values, ref_values, equal_nan=True)
+    assert np.array_equal(radii, ref_radii)
+    exact = [exact_point(curve.control_points, curve.weights, q(t)) for t in ts]
+    check_bounds(exact, values, radii)
+    assert np.array_equal(evaluate(curve, ts, bound=False), ref_values, equal_nan=True)
+
+
+def test_default_kernel_long_input_and_planted_violation():
+    """Many parameters (several kernel blocks); an "exact" value planted at the radius
+    times (1 + 2^-50) from the computed one is caught by the certificate check."""
+    rng = np.random.default_rng(5)
+    curve = BezierCurve([[Fraction(int(x), 1 << 12) for x in rng.integers(-4096, 4096, 3)] for _ in range(11)],
+                        weights=[Fraction(int(w), 8) for w in rng.integers(4, 16, 11)])
+    ts = rng.random(1500)
+    values, radii = evaluate(curve, ts)
+    idx = rng.choice(ts.size, 40, replace=False)
+    exact = [exact_point(curve.control_points, curve.weights, q(ts[i])) for i in idx]
+    check_bounds(exact, values[idx], radii[idx])
+    planted = [[q(v) + q(r) * (1 + mpq(1, 2**50)) for v, r in zip(values[i], radii[i])] for i in idx]
+    with pytest.raises(AssertionError, match="certificate violated"):
+        check_bounds(planted, values[idx], radii[idx])
+
+
+def test_default_refuses_parameters_outside_unit_interval():
+    curve = BezierCurve([[0, 0], [1, 2], [2, 0]])
+    for bad in ([-1e-300], [0.5, 1.0000000000000002], [2.0]):
+        with pytest.raises(DomainError, match="method='horner'"):
+            evaluate(curve, bad)
+        with pytest.raises(DomainError):
+            evaluate_surface(BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]), bad, [0.5] * len(bad))
+    assert np.isfinite(evaluate(curve, [2.0], method="horner")[1]).all()

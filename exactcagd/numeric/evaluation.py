@@ -6,7 +6,10 @@ the exact rational curve at the exact binary value of the float parameter.  The
 evaluation is numpy-vectorized over all parameters at once (the loops run over the
 degree, never over the parameters).
 
-Three algorithms (Sederberg's notes, chapters 2.3 and 3):
+Three algorithms (Sederberg's notes, chapters 2.3 and 3), and the default ``"auto"``:
+``"horner"`` on parameters in [0, 1] only (:class:`DomainError` outside, as de
+Casteljau), run by a compiled loop (:mod:`exactcagd.numeric._horner_kernel`, numba) when
+numba is installed -- the same operations, bit-for-bit the same values and radii:
 
 ``"decasteljau"``  repeated affine maps ``fl(fl(fl(1-t) a) + fl(t b))`` (notes 2.3, 12.16);
                    parameters must lie in [0, 1] (else :class:`DomainError`): outside
@@ -95,10 +98,14 @@ from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from .fp_error import ETA, MIN_NORMAL, down, gamma_over, round_nearest, round_up, to_float_array
 from .fp_error import up_nonnegative
+from . import _horner_kernel
 
 __all__ = ["evaluate", "evaluate_surface", "METHODS"]
 
-METHODS = ("decasteljau", "horner", "power")
+METHODS = ("auto", "decasteljau", "horner", "power")
+#: run the default method through the compiled kernel when numba is installed (tests
+#: switch it off to check the numpy fallback against it)
+KERNEL = True
 
 #: upper bound of u / (1 - u), the relative rounding error of one correctly rounded quotient
 _U_QUOTIENT = round_up(mpq(1, 2**53) / (1 - mpq(1, 2**53)))
@@ -191,6 +198,8 @@ class _DeCasteljau:
 
     @staticmethod
     def check(t: np.ndarray, where: str) -> None:
+        if t.size == 0 or (t.min() >= 0 and t.max() <= 1):  # two reductions, no temporaries
+            return
         bad = (t < 0) | (t > 1)
         if bad.any():
             first = float(t[bad][0])
@@ -394,6 +403,38 @@ class _HornerBernstein:
         return out
 
 
+class _Default(_HornerBernstein):
+    """The default: Horner's rule in Bernstein form on parameters in [0, 1] only.
+
+    The same float operations and radius as ``"horner"`` (so the same certificate), run
+    by the compiled kernel :mod:`exactcagd.numeric._horner_kernel` when numba is installed
+    (bit-for-bit the numpy path's results, which stays the fallback), and refusing
+    parameters outside [0, 1] like de Casteljau's algorithm: there the default evaluates,
+    extrapolation needs an explicit ``method="horner"`` or ``"power"``.
+    """
+
+    name = "auto"
+    check = _DeCasteljau.check
+
+    @staticmethod
+    def work(coefficients: int, dim: int) -> int:
+        """The kernel works in blocks of its own: one chunk of ``_CHUNK_FLOATS`` parameters."""
+        if _horner_kernel.AVAILABLE and KERNEL:
+            return 1
+        return _HornerBernstein.work(coefficients, dim)
+
+    @classmethod
+    def curve(cls, c, c_abs, pair, t, values, radii) -> None:
+        if not _horner_kernel.AVAILABLE or not KERNEL:
+            super().curve(c, c_abs, pair, t, values, radii)
+            return
+        n = c.shape[0] - 1
+        sums = np.ascontiguousarray(np.sum(c_abs, axis=0)[:, 0])
+        out = radii if radii is not None else values
+        _horner_kernel.horner_curve(np.ascontiguousarray(c[..., 0]), sums, t, gamma_over(cls.count(n, t)),
+                                    ETA, MIN_NORMAL, values, out, radii is not None)
+
+
 class _PowerHorner:
     """Exact conversion to the power basis (notes 3.3), then Horner's rule (notes 3.1)."""
 
@@ -451,7 +492,7 @@ class _PowerHorner:
         return (4.0 * (n + 1)) * cls._growth(n, t)
 
 
-_METHODS = {m.name: m for m in (_DeCasteljau, _HornerBernstein, _PowerHorner)}
+_METHODS = {m.name: m for m in (_Default, _DeCasteljau, _HornerBernstein, _PowerHorner)}
 
 
 def _method(method):
@@ -580,7 +621,7 @@ def _chunks(count: int, per_parameter: int):
 
 
 # ---------------------------------------------------------------------------- public
-def evaluate(curve, ts, method: str = "decasteljau", bound: bool = True):
+def evaluate(curve, ts, method: str = "auto", bound: bool = True):
     """Evaluate a Bézier curve at many float parameters with certified error radii.
 
     Parameters
@@ -591,13 +632,14 @@ def evaluate(curve, ts, method: str = "decasteljau", bound: bool = True):
         Parameters; each is taken as its exact binary64 value.  Integers and exact
         rationals are accepted only if they are binary64 numbers exactly
         (:class:`InexactInputError` otherwise, and for NaN/inf).
-    method : {"decasteljau", "horner", "power"}
-        Algorithm (see the module docstring).  ``"decasteljau"`` needs ``ts`` in [0, 1]
-        (:class:`DomainError`); the others accept any finite parameter.  For speed on
-        many parameters prefer ``"horner"``: O(n) per point against de Casteljau's
-        O(n^2), with errors of the same size (``benchmarks/results/peers_evaluate.md``:
-        level with the compiled ``bezier`` package); ``"power"`` is faster still but
-        loses accuracy as the degree grows.
+    method : {"auto", "decasteljau", "horner", "power"}
+        Algorithm (see the module docstring).  ``"auto"`` (default) is ``"horner"``
+        restricted to ``ts`` in [0, 1], compiled when numba is installed;
+        ``"auto"`` and ``"decasteljau"`` need ``ts`` in [0, 1] (:class:`DomainError`);
+        the others accept any finite parameter.  Horner is O(n) per point against de
+        Casteljau's O(n^2), with errors of the same size
+        (``benchmarks/results/peers_evaluate.md``); ``"power"`` loses accuracy as the
+        degree grows.
     bound : bool
         With ``False`` only the values are returned (no second pass).
 
@@ -623,17 +665,23 @@ def evaluate(curve, ts, method: str = "decasteljau", bound: bool = True):
     m.check(t, "ts")
     c, c_abs, pair = (a[..., None] for a in _curve_coefficients(curve, m.name))
     dim = c.shape[1]
-    values = np.empty((t.size, dim))
-    radii = np.empty((t.size, dim)) if bound else None
+    # one allocation for both outputs: two fresh arrays of this size each cost their page
+    # faults again on every call (measured 7 ms against 1.1 ms for 10^5 points in 3-D)
+    values, radii = np.empty((2, t.size, dim)) if bound else (np.empty((t.size, dim)), None)
     for sl in _chunks(t.size, m.work(c.shape[0], 2 * dim if bound else dim)):
         with np.errstate(all="ignore"):  # overflow shows up as an infinite radius
             m.curve(c, c_abs, pair, t[sl], values[sl], radii[sl] if bound else None)
     if curve.is_rational:
-        values, radii = _project(values, radii)
+        if bound and m is _Default and _horner_kernel.AVAILABLE and KERNEL:
+            hom, hom_radii = values, radii
+            values, radii = np.empty((2, t.size, dim - 1))
+            _horner_kernel.project(hom, hom_radii, _U_QUOTIENT, ETA, values, radii)
+        else:
+            values, radii = _project(values, radii)
     return (values, radii) if bound else values
 
 
-def evaluate_surface(surface, us, vs, method: str = "decasteljau", bound: bool = True):
+def evaluate_surface(surface, us, vs, method: str = "auto", bound: bool = True):
     """Evaluate a tensor-product Bézier surface at parameter pairs ``(us[i], vs[i])``.
 
     Rows in ``v`` are evaluated first, then the column in ``u`` (notes 15.2); the radius
