@@ -114,6 +114,15 @@ def build_parser() -> argparse.ArgumentParser:
     ref.add_argument("--progress", action="store_true", default=None, help="progress bar on stderr even when it is not a terminal")
     ref.set_defaults(func=_lazy("exactcagd.refdata.suite", "cmd_refdata"))
 
+    conf = sub.add_parser("conformance", help="run another kernel (bezier, geomdl, occ) on a reference suite and grade it")
+    conf.add_argument("--kernel", required=True, help="bezier, geomdl, occ, or package.module:Class (your own adapter)")
+    conf.add_argument("--suite", required=True, help="suite folder written by 'exactcagd refdata suite --out DIR'")
+    conf.add_argument("--out", required=True, help="folder for report.md, report.json and errors.png (replaced)")
+    conf.add_argument("--kinds", default=None, help="comma-separated kinds (default: every kind the kernel supports)")
+    conf.add_argument("--limit", type=int, default=None, help="only the first N records of each kind")
+    conf.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    conf.set_defaults(func=_lazy("exactcagd.refdata.conformance", "cmd_conformance"))
+
     bench = sub.add_parser("bench", help="run the benchmarks")
     bench.add_argument("--quick", action="store_true", help="smaller sizes, minutes not hours (results in benchmarks/results/; full runs in results/full/)")
     bench.add_argument("--only", default=None, help="comma-separated benchmark topics")
