@@ -39,7 +39,7 @@ from ..geometry.bspline import BSplineCurve, BSplineSurface
 from . import families as fam
 from .records import algebraic, exact, nested_exact, with_f64
 
-__all__ = ["KINDS", "Kind", "make_record", "kind_named", "MAX_DEGREE"]
+__all__ = ["KINDS", "Kind", "make_record", "kind_named", "preload", "MAX_DEGREE"]
 
 #: Largest degree accepted from ``--degree``.
 MAX_DEGREE = 40
@@ -582,6 +582,28 @@ KINDS = {
         _kind("roots", "real roots in [0, 1] of a Bernstein polynomial, with multiplicities", (5,), _roots, ("random", "clustered", "tangency", "endpoints", "extreme_coefficients", "high_degree")),
     )
 }
+
+
+#: Modules the builders of a kind import lazily (heavy: sympy, the algebra layer).
+_LAZY_IMPORTS = {
+    "compose": ("exactcagd.composition", "exactcagd.composition.splines"),
+    "implicitize": ("exactcagd.algebra.implicitize",),
+    "inversion": ("sympy", "exactcagd.algebra.inversion"),
+    "intersect": ("exactcagd.algebra", "exactcagd.algebra.intersect"),
+}
+
+
+def preload(kinds) -> None:
+    """Import what the builders of ``kinds`` import lazily.
+
+    Called before forking worker processes, so each worker inherits the modules
+    instead of importing them again (one to two seconds for sympy and the algebra layer).
+    """
+    import importlib
+
+    for kind in kinds:
+        for module in _LAZY_IMPORTS.get(kind, ()):
+            importlib.import_module(module)
 
 
 def kind_named(name: str) -> Kind:

@@ -3,7 +3,7 @@
 Records are computed in *batches* of consecutive indices (one task per batch, never
 one per record), on the calling process (``jobs=1``), a local process pool
 (``jobs>1``) or a Dask cluster, and yielded strictly in index order.  At most
-``2 * workers + 2`` batches are in flight, so memory does not grow with the count;
+``2 * workers + 2`` batches (Dask: ``4 * workers + 2``) are in flight, so memory does not grow with the count;
 each record is a pure function of its identity (:func:`exactcagd.refdata.kinds.make_record`),
 so the bytes never depend on the executor or the batch size.
 
@@ -23,7 +23,7 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
 from ..errors import InputError
-from .kinds import make_record
+from .kinds import make_record, preload
 
 __all__ = ["BatchSpec", "batch_lines", "plan_batches", "ordered_lines", "Progress", "record_line"]
 
@@ -143,8 +143,9 @@ def ordered_lines(specs, jobs: int = 1, dask: bool = False, scheduler=None, prog
         client, cluster = _dask_client(jobs, scheduler)
         try:
             workers = max(1, len(client.scheduler_info().get("workers", {})) or jobs)
+            client.run(preload, sorted({spec.kind for spec in specs}))  # imports once per worker, not inside a batch
             submit = lambda spec: client.submit(batch_lines, spec, pure=False)  # noqa: E731
-            for spec, lines in _windowed(submit, specs, 2 * workers + 2):
+            for spec, lines in _windowed(submit, specs, 4 * workers + 2):  # hides the scheduler round trip
                 yield from lines
                 if progress:
                     progress.update(spec.size)
@@ -159,6 +160,7 @@ def ordered_lines(specs, jobs: int = 1, dask: bool = False, scheduler=None, prog
             if progress:
                 progress.update(spec.size)
         return
+    preload({spec.kind for spec in specs})  # forked workers inherit the imports
     with ProcessPoolExecutor(max_workers=jobs) as pool:
         submit = lambda spec: pool.submit(batch_lines, spec)  # noqa: E731
         for spec, lines in _windowed(submit, specs, 2 * jobs + 2):
