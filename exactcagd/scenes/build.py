@@ -68,13 +68,14 @@ def _bits(value: int) -> int:
     return max(1, abs(value).bit_length())
 
 
-def _bound(node, where: str, depth: int, count: list) -> tuple[int, int]:
-    """``(degree, bits)`` upper bounds of a whitelisted expression node, without evaluating it.
+def _bound(node, where: str, depth: int, count: list) -> tuple[int, int, int]:
+    """``(degree, numerator bits, denominator bits)`` bounds of a whitelisted expression node,
+    computed from the syntax tree without evaluating it.
 
-    ``bits`` bounds the binary size of the numerators and denominators of the expanded
-    coefficients (products add sizes plus the log of the number of terms; a power
-    multiplies them).  Raises :class:`SceneError` for a forbidden node or a bound
-    beyond ``LIMITS``.
+    The bits bound the binary size of the expanded coefficients over a common
+    denominator: a sum adds the denominators' sizes (their lcm divides their product),
+    a product adds sizes plus the log of the number of terms, a power multiplies them.
+    Raises :class:`SceneError` for a forbidden node or a bound beyond ``LIMITS``.
     """
     count[0] += 1
     if count[0] > LIMITS["max_expression_nodes"]:
@@ -86,9 +87,9 @@ def _bound(node, where: str, depth: int, count: list) -> tuple[int, int]:
     if isinstance(node, ast.Constant) and isinstance(node.value, int) and not isinstance(node.value, bool):
         if _bits(node.value) > LIMITS["max_number_digits"] * 4:
             raise SceneError(f"{where}: integer literal with more than {LIMITS['max_number_digits']} digits")
-        return 0, _bits(node.value)
+        return 0, _bits(node.value), 0
     if isinstance(node, ast.Name) and node.id in ("x", "y"):
-        return 1, 1
+        return 1, 1, 0
     if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
         return _bound(node.operand, where, depth + 1, count)
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Pow):
@@ -97,25 +98,25 @@ def _bound(node, where: str, depth: int, count: list) -> tuple[int, int]:
         k = node.right.value
         if not 0 <= k <= _MAX_POWER:
             raise SceneError(f"{where}: exponent {k} outside 0..{_MAX_POWER}")
-        degree, bits = _bound(node.left, where, depth + 1, count)
-        return _checked(degree * k, (bits + degree + 1) * max(k, 1), where)
+        degree, num, den = _bound(node.left, where, depth + 1, count)
+        return _checked(degree * k, (num + 2 * (degree + 1).bit_length()) * k, den * k, where)
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub, ast.Mult, ast.Div)):
-        d1, b1 = _bound(node.left, where, depth + 1, count)
-        d2, b2 = _bound(node.right, where, depth + 1, count)
+        d1, n1, e1 = _bound(node.left, where, depth + 1, count)
+        d2, n2, e2 = _bound(node.right, where, depth + 1, count)
         if isinstance(node.op, (ast.Add, ast.Sub)):
-            return _checked(max(d1, d2), 2 * max(b1, b2) + 1, where)  # common denominators
+            return _checked(max(d1, d2), max(n1 + e2, n2 + e1) + 1, e1 + e2, where)
         if isinstance(node.op, ast.Mult):
-            return _checked(d1 + d2, b1 + b2 + (d1 + d2 + 2).bit_length(), where)
-        return _checked(d1, b1 + b2, where)  # divisor checked to be a constant when expanded
+            return _checked(d1 + d2, n1 + n2 + 2 * (min(d1, d2) + 1).bit_length(), e1 + e2, where)
+        return _checked(d1, n1 + e2, e1 + n2, where)  # the divisor is checked to be a constant when expanded
     raise SceneError(f"{where}: only numbers, x, y, + - * / and integer powers are allowed ({ast.dump(node)[:60]})")
 
 
-def _checked(degree: int, bits: int, where: str) -> tuple[int, int]:
+def _checked(degree: int, num: int, den: int, where: str) -> tuple[int, int, int]:
     if degree > LIMITS["max_expression_degree"]:
         raise SceneError(f"{where}: expression of degree {degree} exceeds the limit {LIMITS['max_expression_degree']}")
-    if bits > LIMITS["max_expression_bits"]:
-        raise SceneError(f"{where}: expression coefficients may reach ~{bits} bits (limit {LIMITS['max_expression_bits']})")
-    return degree, bits
+    if num + den > LIMITS["max_expression_bits"]:
+        raise SceneError(f"{where}: expression coefficients may reach ~{num + den} bits (limit {LIMITS['max_expression_bits']})")
+    return degree, num, den
 
 
 def _expand(node, where: str) -> dict:

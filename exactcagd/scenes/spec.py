@@ -61,7 +61,7 @@ LIMITS = {
     # height expressions of grid generators (bounded on the syntax tree, before evaluation)
     "max_expression_chars": 500,
     "max_expression_nodes": 400,
-    "max_expression_depth": 40,
+    "max_expression_depth": 100,
     "max_expression_degree": 60,
     "max_expression_bits": 20000,
 }
