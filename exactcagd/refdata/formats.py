@@ -72,7 +72,7 @@ def bezier_intersection_entry(case_id: int, id1: str, id2: str, answer: dict, no
         rows = [(t1, t2, pt) for ov in answer["overlaps"] for t1, t2, pt in zip(ov["t1"], ov["t2"], ov["points"])]
         rows.sort(key=lambda row: float.fromhex(row[0]["f64"]))  # the harness wants curve1_params increasing
         kind = "coincident"
-        points = [[pt[0] for _, _, pt in rows], [pt[1] for _, _, pt in rows]]
+        points = [[_algebraic_number(pt[0]) for _, _, pt in rows], [_algebraic_number(pt[1]) for _, _, pt in rows]]
     else:
         hits = answer["intersections"]
         kind = "no-intersection" if not hits else ("tangent" if any((h["multiplicity"] or 1) > 1 for h in hits) else "standard")

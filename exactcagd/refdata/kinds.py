@@ -31,7 +31,7 @@ import numpy as np
 from gmpy2 import mpq
 
 from ..errors import InputError
-from ..exact.algebraic import real_roots_bernstein
+from ..exact.algebraic import RealAlgebraic, real_roots_bernstein
 from ..exact.bernstein import de_casteljau, derivative, elevate, subdivide
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
@@ -483,8 +483,11 @@ def _intersect(family):
         try:
             found = exact_intersect(c1, c2)
             overlaps = []
-        except OverlapError as exc:
-            found, overlaps = [], _overlaps_from(exc, c2)
+        except OverlapError as exc:  # shared arcs, and the isolated common points besides them
+            from ..algebra.intersect import CurveIntersection
+
+            found = [CurveIntersection(t1, t2, None, _point_on(c2, t2)) for t1, t2 in getattr(exc, "points", [])]
+            overlaps = _overlaps_from(exc, c1, c2)
         points = []
         for hit in found:
             points.append(
@@ -500,21 +503,44 @@ def _intersect(family):
     return build
 
 
-def _overlaps_from(exc, curve2: BezierCurve) -> list:
-    """Common arcs from an :class:`OverlapError`: ``t2`` in each interval, ``t1 = (a t2 + b) / (c t2 + d)``.
+def _point_on(curve: BezierCurve, t: RealAlgebraic) -> tuple:
+    """The exact point ``curve(t)`` as algebraic numbers (``t`` rational or algebraic)."""
+    if t.is_rational:
+        return tuple(RealAlgebraic.from_rational(x) for x in curve.evaluate(t.value))
+    from ..algebra.implicitize import reduced_components
+    from ..algebra.numberfield import algebraic_value
 
-    Each overlap lists its two ends with increasing ``t1``; ``t2[k]`` and ``points[k]``
-    belong to the end ``t1[k]``.
-    """
+    X, Y, W, _ = reduced_components(curve, warn=False)
+    return algebraic_value(t, X, W), algebraic_value(t, Y, W)
+
+
+def _arc_ends(exc) -> list:
+    """``[((a, b), (c, d))]``: parameter intervals of the shared arcs (exact, ``lo < hi``)."""
+    arcs = getattr(exc, "overlaps", None)
+    if arcs:  # algebra.intersect's Overlap objects (exact ends, any reparametrization)
+        return [(tuple(ov.t1_interval), tuple(ov.t2_interval)) for ov in arcs]
     if exc.mapping is None or not exc.t2_intervals:
         return []
-    a, b, c, d = exc.mapping
+    a, b, c, d = exc.mapping  # t1 = (a t2 + b) / (c t2 + d), monotone on each interval
     out = []
     for lo, hi in exc.t2_intervals:
-        ends = sorted(((a * t2 + b) / (c * t2 + d), t2) for t2 in (lo, hi))
-        entry = {"t1": [algebraic(t1) for t1, _ in ends], "t2": [algebraic(t2) for _, t2 in ends]}
-        with_f64(entry, "points", [list(curve2.evaluate(t2)) for _, t2 in ends])
-        out.append(entry)
+        t1 = sorted(((a * lo + b) / (c * lo + d), (a * hi + b) / (c * hi + d)))
+        out.append((tuple(RealAlgebraic.from_rational(x) for x in t1), (RealAlgebraic.from_rational(lo), RealAlgebraic.from_rational(hi))))
+    return out
+
+
+def _overlaps_from(exc, curve1: BezierCurve, curve2: BezierCurve) -> list:
+    """Common arcs from an :class:`OverlapError`, ends paired by their exact points.
+
+    Each overlap lists its two ends with increasing ``t1``; ``t2[k]`` and ``points[k]``
+    belong to the end ``t1[k]`` (``t2`` decreases when the curves run opposite ways).
+    """
+    out = []
+    for (a, b), (c, d) in _arc_ends(exc):
+        start = _point_on(curve1, a)
+        t2 = (c, d) if tuple(_point_on(curve2, c)) == tuple(start) else (d, c)
+        points = [start, _point_on(curve1, b)]
+        out.append({"t1": [algebraic(a), algebraic(b)], "t2": [algebraic(x) for x in t2], "points": [[algebraic(x) for x in p] for p in points]})
     return out
 
 

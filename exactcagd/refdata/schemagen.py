@@ -202,9 +202,9 @@ def _io(kind: str) -> tuple[dict, dict]:
             {"t1": alg, "t2": alg, "point": {"type": "array", "items": alg, "minItems": 2, "maxItems": 2}, "multiplicity": {"type": ["integer", "null"], "minimum": 1, "description": "order of contact (1 transversal, 2 tangent, ...); null when singular on both curves"}},
             ["t1", "t2", "point", "multiplicity"],
         )
-        ov_props = {"t1": {"type": "array", "items": alg, "minItems": 2, "maxItems": 2}, "t2": {"type": "array", "items": alg, "minItems": 2, "maxItems": 2}}
-        _pair(ov_props, "points", 2, "the points at the two ends of the overlap")
-        overlap = _obj(ov_props, ["t1", "t2", "points", "points_f64"], "a common arc: t1 runs over [t1[0], t1[1]] (increasing) while t2 runs from t2[0] to t2[1]; the ends correspond")
+        pair = {"type": "array", "items": alg, "minItems": 2, "maxItems": 2}
+        ov_props = {"t1": pair, "t2": pair, "points": {"type": "array", "items": pair, "minItems": 2, "maxItems": 2, "description": "the points at the two ends, [x, y] each"}}
+        overlap = _obj(ov_props, ["t1", "t2", "points"], "a common arc: t1 runs over [t1[0], t1[1]] (increasing) while t2 runs from t2[0] to t2[1]; end k is t1[k], t2[k], points[k]")
         inp = _obj({"curve1": _bezier_curve(), "curve2": _bezier_curve()}, ["curve1", "curve2"], "two planar Bézier curves on [0, 1]")
         ans = _obj({"intersections": {"type": "array", "items": hit, "description": "isolated common points with t1, t2 in [0, 1], sorted by (t1, t2)"}, "overlaps": {"type": "array", "items": overlap}}, ["intersections", "overlaps"])
         return inp, ans
