@@ -18,27 +18,17 @@ from exactcagd.scenes.build import parse_height
 from exactcagd.scenes.runner import Runner
 from exactcagd.scenes.spec import LIMITS, SceneError, load_scene, parse_scene
 
-SCENE = {
-    "scene": {"name": "small", "float_policy": "reject"},
-    "surfaces": {
-        "s": {
-            "type": "bspline",
-            "knots_u": [0, 0, 0, "1/2", 1, 1, 1],
-            "knots_v": [0, 0, 0, "1/2", 1, 1, 1],
-            "control_net": {"generator": "grid", "size": [4, 4], "z": "x*y"},
-        }
-    },
-    "curves": {
-        "k": {"type": "bezier", "control_points": [["1/8", "1/8"], ["1/4", "3/8"], ["3/8", "1/8"]]},
-        "m": {"type": "bezier", "control_points": [["1/8", "1/4"], ["3/8", "1/8"]]},
-    },
-    "products": [
-        {"kind": "patches", "name": "crossed", "surface": "s", "only_crossed_by": "k"},
-        {"kind": "image_curve", "name": "image", "surface": "s", "curve": "k"},
-        {"kind": "intersections", "name": "cuts", "curves": ["k", "m"]},
-        {"kind": "picture", "name": "pic", "of": ["s", "k", "image", "cuts"], "samples": 20},
-    ],
-}
+from test_scenes_runner import SCENE as BASE
+
+#: the runner tests' scene plus a second curve and an intersections product
+SCENE = copy.deepcopy(BASE)
+SCENE["curves"]["m"] = {"type": "bezier", "control_points": [["1/8", "1/4"], ["3/8", "1/8"]]}
+SCENE["products"] = [
+    {"kind": "patches", "name": "crossed", "surface": "s", "only_crossed_by": "k"},
+    {"kind": "image_curve", "name": "image", "surface": "s", "curve": "k"},
+    {"kind": "intersections", "name": "cuts", "curves": ["k", "m"]},
+    {"kind": "picture", "name": "pic", "of": ["s", "k", "image", "cuts"], "samples": 20},
+]
 #: the same without the picture (drawing is the slow part; most tests do not need it)
 PLAIN = dict(SCENE, products=SCENE["products"][:3])
 
