@@ -17,7 +17,7 @@ from exactcagd.curves_on_surfaces import approximate
 from exactcagd.curves_on_surfaces.approximants import parabola, s_parabola
 from exactcagd.curves_on_surfaces.samples import analytic_surface, closed_domain_curve
 from exactcagd.reparam import cubic
-from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
+from exactcagd.proofs._ledger import claim, erratum, predicate, reconstructed, same_expr, same_value, verified, verified_range
 
 a1, a2, a3, b, t, v, u = sympy.symbols("alpha1 alpha2 alpha3 beta t v u")
 ALPHA = a1 * (1 - t) ** 2 + 2 * a2 * t * (1 - t) + a3 * t**2
@@ -58,14 +58,20 @@ def eq8_9():
     h = 2 * a1 + 8 * b**3 - 14 * b**2 + 9 * b - 2 * a2 * b + 4 * a2 * b**2 - a3 * b**3 + 11 * a1 * b**2 + a3 * b**2 - 5 * a1 * b**3 - 2 * a2 * b**3 - 8 * a1 * b - 2
     p = b * (5 * b - 4 * b**2 + 4 * a1 * b**2 - 2 - 6 * a1 * b + 2 * a1)
     q = -(1 - a1) * b**2 * (1 - b)
-    assert sympy.cancel(g * sub - (h * t**2 + p * t + q)) != 0  # neither in t ...
-    assert sympy.cancel(g * printed - (h * v**2 + p * v + q)) != 0  # ... nor in v
+    assert sympy.cancel(g * printed - (h * v**2 + p * v + q)) != 0  # not in v either
+
+    def holds_after_substitution(ghpq):
+        gg, hh, pp, qq = ghpq
+        return same_expr(sympy.expand(gg * sub))(hh * t**2 + pp * t + qq)
+
     return erratum(
         "g u = h v^2 + p v + q, g = beta^2 (1 - beta), h = ..., p = ..., q = -(1 - alpha1) beta^2 (1 - beta)",
         "u = (1 - alpha1) + 2 (alpha1 - alpha2) t + (2 alpha2 - alpha1 - alpha3) t^2 (g = 1, h = 2 alpha2 - alpha1 - alpha3, "
         "p = 2 (alpha1 - alpha2), q = 1 - alpha1; the variable is t, not v)",
         "substituting (8) into (6)-(7) gives back u = 1 - alpha(t) (symbolic); the printed g, h, p, q satisfy the identity "
         "neither in t nor in v (already u(0) = q/g = -(1 - alpha1) has the wrong sign)",
+        printed_form=(g, h, p, q), corrected_form=(sympy.Integer(1), 2 * a2 - a1 - a3, 2 * (a1 - a2), 1 - a1),
+        check=predicate(holds_after_substitution),
     )
 
 
@@ -79,12 +85,64 @@ def theorem2():
     assert implicit.total_degree() == 3 and sympy.factor_list(implicit.as_expr())[1][0][0].as_poly(u, v).total_degree() == 3
     at_half = sympy.Poly(sympy.expand(sympy.fraction(sympy.together(_printed_6_7().subs({**vals, b: sympy.Rational(1, 2)})))[1]), v)
     assert at_half.degree() <= 0  # beta = 1/2: the denominator is constant, u(v) is a true parabola
+    curves = {"(u, v)": implicit.as_expr(), "(u, t)": sympy.expand(u - (1 - ALPHA).subs(vals))}
+    coords = {"(u, v)": (u, v), "(u, t)": (u, t)}
+
+    def is_parabola_in(plane):
+        P = sympy.Poly(curves[plane], *coords[plane])
+        if P.total_degree() != 2:
+            return f"the curve has degree {P.total_degree()} in {plane}"
+        x_, y_ = coords[plane]
+        A, B, C = P.coeff_monomial(x_**2), P.coeff_monomial(x_ * y_), P.coeff_monomial(y_**2)
+        return None if B**2 - 4 * A * C == 0 else f"B^2 - 4AC = {B**2 - 4 * A * C} in {plane}"
+
     return erratum(
         "the curve (6) is a parabola (y^2 = r x with y = v + p/(2h), x = u + p^2/(4gh))",
         "the curve is a parabola in the (t, u) coordinates, u = 1 - alpha(t), with v = M_beta(t) a Möbius function of t "
         "(a line if 2 alpha2 = alpha1 + alpha3); in the (u, v) domain it is the rational cubic u ((2beta-1)v - (beta-1))^2 = N(v), "
         "a parabola only for beta = 1/2",
         "alpha = (1/5, 4/5, 3/10), beta = 2/5: the implicit equation u L(v)^2 - N(v) = 0 is irreducible of total degree 3; at beta = 1/2 L is constant",
+        printed_form="(u, v)", corrected_form="(u, t)", check=predicate(is_parabola_in),
+    )
+
+
+@claim(doc="yang", section="5", ref="Theorem 2 proof: completed square", statement="Eq. (9) can be rewritten (v + p/(2h))^2 = g (u + p^2/(4gh))/h; y = v + p/(2h), x = u + p^2/(4gh), r = g/h: y^2 = r x")
+def theorem2_completed_square():
+    g, h, p, q = sympy.symbols("g h p q", nonzero=True)
+    eq9 = h * v**2 + p * v + q - g * u  # (9): g u = h v^2 + p v + q
+
+    def same_curve_as_9(rewritten):
+        # rewritten = 0 must be (9) divided by h
+        return same_expr(eq9)(sympy.expand(h * rewritten))
+
+    printed = (v + p / (2 * h)) ** 2 - g * (u + p**2 / (4 * g * h)) / h
+    corrected = (v + p / (2 * h)) ** 2 - g * (u - q / g + p**2 / (4 * g * h)) / h
+    return erratum(
+        "(v + p/(2h))^2 = g (u + p^2/(4gh))/h, x = u + p^2/(4gh)",
+        "(v + p/(2h))^2 = g (u - q/g + p^2/(4gh))/h, x = u - q/g + p^2/(4gh)",
+        "completing the square in g u = h v^2 + p v + q (sympy, symbolic g, h, p, q): the printed form drops the -q/g term",
+        printed_form=printed, corrected_form=corrected, check=predicate(same_curve_as_9),
+    )
+
+
+#: which coefficients each equation of section 4 defines (transcribed from the text; tests/test_ledger_rules.py
+#: re-reads the seed text when it is available)
+EQUATION_COEFFICIENTS = {"(2)": ("alpha",), "(3)": ("beta",), "(4)": ("alpha_1", "alpha_2", "beta_1", "beta_2"),
+                         "(5)": ("alpha_1", "alpha_2", "alpha_3", "beta_1", "beta_2", "beta_3")}
+
+
+@claim(doc="yang", section="5", ref="beta_3, beta_2, beta_1 in Eq. (4)", statement="let the coefficients beta_3, beta_2 and beta_1 in Eq. (4) be the same and denote them as beta")
+def beta_cross_reference():
+    def defines_three_betas(tag):
+        have = EQUATION_COEFFICIENTS[tag]
+        missing = [c for c in ("beta_1", "beta_2", "beta_3") if c not in have]
+        return None if not missing else f"Eq. {tag} defines {', '.join(have)}: no {', '.join(missing)}"
+
+    return erratum(
+        "beta_3, beta_2 and beta_1 in Eq. (4)",
+        "beta_3, beta_2 and beta_1 in Eq. (5) (the cubic transformation; (4) is the quadratic one with beta_1, beta_2 only)",
+        "the coefficients named must be defined by the equation cited (transcribed equation contents)",
+        printed_form="(4)", corrected_form="(5)", check=predicate(defines_three_betas), reference="text",
     )
 
 
@@ -121,10 +179,22 @@ def eq15():
     quad = sympy.numer(sympy.together((2 * b * (a1 - a2) / (1 - b)).subs(b, beta15) - k1))
     target = 4 * a2**2 - 4 * (a1 + a3) * a2 + 4 * a1 * a3 + k1 * k2
     assert sympy.expand(quad + target) == 0
+    eqs = {"(12)": 2 * b * (a1 - a2) / (1 - b) - k1, "(13)": 2 * (1 - b) * (a2 - a3) / b - k2}
+
+    def derivation(numbers):
+        solved_from, substituted_into = numbers
+        if sympy.simplify(eqs[solved_from].subs(b, beta15)) != 0:
+            return f"(15) does not solve {solved_from}"
+        q_ = sympy.numer(sympy.together(eqs[substituted_into].subs(b, beta15)))
+        if sympy.expand(q_ + target) != 0 and sympy.expand(q_ - target) != 0:
+            return f"substituting (15) into {substituted_into} does not give the quadratic"
+        return None
+
     return erratum(
         "From Eq. (12) we have (15); substituting (15) into (13) gives the quadratic",
         "(15) solves (13) (u'(1) = k2); substituting (15) into (12) (u'(0) = k1) gives 4 a2^2 - 4(a1+a3) a2 + 4 a1 a3 + k1 k2 = 0",
         "symbolic: the formula (15) and the quadratic are right, the equation numbers (12)/(13) are swapped",
+        printed_form=("(12)", "(13)"), corrected_form=("(13)", "(12)"), check=predicate(derivation),
     )
 
 
@@ -168,10 +238,36 @@ def eq16_17():
     )
 
 
+def _sym_map(coeffs):
+    num, den = coeffs
+    num = [sympy.Rational(str(x)) if not hasattr(x, "free_symbols") else x for x in map(_sym, num)]
+    den = [sympy.Rational(str(x)) if not hasattr(x, "free_symbols") else x for x in map(_sym, den)]
+    bern = lambda cs: sum(c * sympy.binomial(len(cs) - 1, i) * t**i * (1 - t) ** (len(cs) - 1 - i) for i, c in enumerate(cs))
+    return bern(num) / bern(den)
+
+
+def _sym(x):
+    return sympy.sympify(str(x))
+
+
+def _zero(expr) -> bool:
+    return sympy.radsimp(sympy.expand(expr)) == 0
+
+
+def _assert_interpolates(a, p0, d0, p1, d1):
+    """Independent check of Theorem 1's promise: end points and tangent directions (sympy)."""
+    uu, vv = _sym_map(a.u_map), _sym_map(a.v_map)
+    for tt, p, d in ((0, p0, d0), (1, p1, d1)):
+        assert _zero(uu.subs(t, tt) - _sym(p[0])) and _zero(vv.subs(t, tt) - _sym(p[1]))
+        du, dv = (sympy.diff(f, t).subs(t, tt) for f in (uu, vv))
+        assert _zero(du * _sym(d[1]) - dv * _sym(d[0])), "tangent not parallel"
+        assert sympy.radsimp(du * _sym(d[0]) + dv * _sym(d[1])) > 0, "tangent reversed"
+
+
 @claim(doc="yang", section="5", ref="Theorem 1", statement="Types 1-4: m0 = 0 or m1 = 0 -> s-parabola; n0 = 0 or n1 = 0 -> t-parabola; X >= K -> s-parabola; X <= K -> t-parabola (X = (u0-u1)^2/(v0-v1)^2, K = m0 m1/(n0 n1)); every monotonic curve falls into one type")
 def theorem1():
     rng = random.Random(3)
-    count = 0
+    count = checked = 0
     for _ in range(400):
         p0 = (mpq(rng.randint(0, 30), 30), mpq(rng.randint(0, 30), 30))
         p1 = (mpq(rng.randint(0, 30), 30), mpq(rng.randint(0, 30), 30))
@@ -187,6 +283,9 @@ def theorem1():
         d1 = (su * comps[2], sv * comps[3])
         a = parabola(p0, d0, p1, d1)
         assert a is not None
+        if count % 12 == 0:  # sympy is slow on sqrt coefficients: every twelfth case (~20)
+            _assert_interpolates(a, p0, d0, p1, d1)
+            checked += 1
         count += 1
         if zeros[0] or zeros[2]:
             assert a.kind == "s-parabola"
@@ -200,8 +299,12 @@ def theorem1():
     assert parabola((mpq(0), mpq(0)), (mpq(0), mpq(1)), (mpq(1), mpq(1)), (mpq(1), mpq(0))) is None
     return verified_range(
         f"{count} random monotone exact cases with at most one zero end-derivative component",
+        f"{checked} of them: each parabola, evaluated in sympy from its Bernstein maps, has the given end points and end tangents parallel and "
+        "equally directed to the given ones; "
         "X >= K and X <= K cover every case (Type 3 / Type 4); with both m0 = 0 and n1 = 0 (excluded by the theorem's "
         "assumption) no s- or t-parabola exists -- exactcagd cuts such a piece at its shoulder point",
+        compared="Theorem 1's promise (same end points, same tangent directions) vs sympy evaluation and differentiation of the constructed curve",
+        reference="sympy",
     )
 
 
@@ -221,11 +324,18 @@ def cubic_form():
     cv = sum(w[i] * P[i][1] * B[i] for i in range(4)) / den
     assert sympy.simplify(cv - x) == 0  # parametrized by v itself
     assert sympy.simplify(cu - _printed_6_7().subs(v, x)) == 0
-    return reconstructed(
+    def labels_match_formula(labels):
+        used = ("w0", "w1", "w2", "w3")  # the indices of C2's printed formula
+        return None if tuple(labels) == used else f"weights listed as {', '.join(labels)}; C2's formula uses {', '.join(used)}"
+
+    return erratum(
         "C2(t) with weights labelled w1..w4",
         "weights w0..w3 = (b-1)^2, (1-b^2)/3, b(2-b)/3, b^2, and the parameter of this form is v itself (C2(v) = (u(v), v)); "
         "in the parameter t of the iso-line the same control points carry the weights b, (1+b)/3, (2-b)/3, 1-b (Möbius-equivalent)",
-        "symbolic: v-coordinate of the printed form is x, u-coordinate equals (6)-(7) at v = x",
+        "symbolic: v-coordinate of the printed form is x, u-coordinate equals (6)-(7) at v = x; the printed list "
+        "numbers the weights w1..w4 while the formula above it uses w0..w3 (a typo, not the extraction)",
+        printed_form=("w1", "w2", "w3", "w4"), corrected_form=("w0", "w1", "w2", "w3"), check=predicate(labels_match_formula),
+        reference="text",
     )
 
 
@@ -272,15 +382,78 @@ def table_degrees():
     return verified("bicubic B-spline surface and cubic NURBS domain curve: parabola 9 = 2m+n, hyperbola 6 = polyline 6 = m+n, exact image of one piece 18 = (m+n) d (reduced rational function)")
 
 
-@claim(doc="yang", section="6", ref="Tables 2-4 continuity", statement="Continuity: parabola G1; polyline and hyperbola 1 deg-G1; all curves lie completely on the surface (distance 0)")
+class _Radicals:
+    """Numbers a + b sqrt(D) (several D) as sympy polynomials in symbols r_D with r_D^2 = D (exact zero tests)."""
+
+    def __init__(self):
+        self.symbols = {}
+
+    def __call__(self, x):
+        D = getattr(x, "D", None)
+        if D is None:
+            return sympy.Rational(str(x))
+        if x.b == 0:
+            return sympy.Rational(str(x.a))
+        r = self.symbols.setdefault(int(D), sympy.Symbol(f"r{len(self.symbols)}", positive=True))
+        return sympy.Rational(str(x.a)) + sympy.Rational(str(x.b)) * r
+
+    def is_zero(self, expr) -> bool:
+        """Zero iff every coefficient of the reduced form in the basis of radical products is 0.
+
+        Valid when no product of distinct radicands is a square (asserted), so the basis is independent over Q.
+        """
+        import gmpy2
+
+        Ds = list(self.symbols)
+        for i in range(len(Ds)):
+            for j in range(i + 1, len(Ds)):
+                assert not gmpy2.is_square(Ds[i] * Ds[j]), "dependent radicals"
+        rs = [self.symbols[D] for D in Ds]
+        P = sympy.Poly(sympy.expand(expr), *rs) if rs else sympy.Poly(sympy.expand(expr), sympy.Symbol("_"))
+        for D, r in zip(Ds, rs):
+            P = P.rem(sympy.Poly(r**2 - D, *rs))
+        return P.is_zero
+
+
+def _end_tangents(seg, R):
+    """End points and directions P_1 - P_0, P_n - P_(n-1) of a rational Bézier segment (weights checked > 0)."""
+    H = seg.homogeneous()
+    assert all(H[i, -1] > 0 for i in (0, 1, -2, -1))
+    pt = lambda row: [R(x) / R(row[-1]) for x in row[:-1]]
+    P0, P1, Pm, Pn = pt(H[0]), pt(H[1]), pt(H[-2]), pt(H[-1])
+    return P0, [a - b_ for a, b_ in zip(P1, P0)], Pn, [a - b_ for a, b_ in zip(Pn, Pm)]
+
+
+def _g1_joints(segments, closed):
+    """Count the joints where consecutive segments meet with parallel, equally directed tangents (exact, sympy)."""
+    ok = 0
+    pairs = list(zip(segments, segments[1:])) + ([(segments[-1], segments[0])] if closed else [])
+    for left, right in pairs:
+        R = _Radicals()
+        _, _, end, d_end = _end_tangents(left, R)
+        start, d_start, _, _ = _end_tangents(right, R)
+        clear = lambda e: sympy.numer(sympy.together(e))
+        assert all(R.is_zero(clear(a - b_)) for a, b_ in zip(end, start)), "gap at a joint"
+        cross = [d_end[1] * d_start[2] - d_end[2] * d_start[1], d_end[2] * d_start[0] - d_end[0] * d_start[2],
+                 d_end[0] * d_start[1] - d_end[1] * d_start[0]]
+        dot = sum(a * b_ for a, b_ in zip(d_end, d_start))
+        # the tangents are parallel (exact); the sign of their dot product (+-|d_end||d_start|, far from 0) at 50 digits
+        dot = dot.subs({r: sympy.sqrt(D) for D, r in R.symbols.items()})
+        if all(R.is_zero(clear(c)) for c in cross) and sympy.N(dot, 50) > 0:
+            ok += 1
+    return ok
+
+
+@claim(doc="yang", section="6", ref="Tables 2-4 continuity", slow=True, statement="Continuity: parabola G1; polyline and hyperbola 1 deg-G1; all curves lie completely on the surface (distance 0)")
 def table_continuity():
     S = analytic_surface(4, 4, "face")
     D = closed_domain_curve(8)
     r = approximate(S, D, "1e-2")
-    assert r.continuity == "G1" and r.g1_verified
+    joints = _g1_joints(r.segments, r.closed)
+    assert joints == len(r.segments)
     h = approximate(S, D, "1e-2", "hyperbola", angle_tol=10)
     assert h.max_joint_angle <= 10
-    return verified("exact G1 at every joint of the parabola result (cross products of exact tangents are 0); baselines meet their angle tolerance; segments are exact images X(u(t), v(t)) (tests check it at 2N+1 parameters)")
+    return verified("exact G1 at every joint of the parabola result: the end tangents P_1 - P_0, P_n - P_(n-1) of consecutive segments, computed in sympy from their control points, have cross product 0 and positive dot product; baselines meet their angle tolerance; segments are exact images X(u(t), v(t)) (tests check it at 2N+1 parameters)")
 
 
 @claim(doc="yang", section="4.2", ref="hyperbola iso-lines", statement="a vertical/horizontal segment of the quadratic reparameterization's domain is a hyperbola in the original domain; an s-hyperbola has only three variables alpha1, alpha2, beta, so G1 (four constraints) is impossible in general")
