@@ -7,7 +7,8 @@ number rounded once; Bézier data as one-span clamped B-splines).  geomdl's own 
 * ``surface_eval``: ``evaluate_single`` and ``operations.normal(normalize=False)``;
 * ``bspline_eval``: ``evaluate_single`` (curves and surfaces);
 * ``knot_insertion``: ``operations.insert_knot``;
-* ``bezier_extraction``: ``operations.decompose_curve``;
+* ``bezier_extraction``: ``operations.decompose_curve`` (control points; geomdl normalises
+  each piece's knot vector to [0, 1], so the pieces' intervals are not graded);
 * ``degree_elevation``: ``operations.degree_operations``;
 * ``subdivision``: ``operations.split_curve``.
 
@@ -70,7 +71,8 @@ class GeomdlAdapter(Adapter):
         geo = to_geomdl(bspline_curve(inp))
         segments = []
         for piece in self.operations.decompose_curve(geo):
-            segments.append({"interval": [piece.knotvector[0], piece.knotvector[-1]], **_pieces(piece)})
+            # geomdl normalises every piece's knot vector to [0, 1], so it reports no interval
+            segments.append(_pieces(piece))
         return {"segments": segments}
 
     def degree_elevation(self, inp):
