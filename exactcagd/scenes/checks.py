@@ -93,8 +93,12 @@ def _check_degree(degree: int, where: str, what: str) -> None:
         raise SceneError(f"{where}: {what} would have degree {degree}, above LIMITS['max_result_degree'] = {LIMITS['max_result_degree']}")
 
 
-def check_products(scene: Scene, objects: dict) -> list[str]:
+def check_products(scene: Scene, objects: dict, cached=frozenset()) -> list[str]:
     """Check every product of ``scene`` against the built ``objects``; return warnings.
+
+    ``cached`` names products whose outputs are cached: they are checked all the same,
+    but get no cost estimate (nothing will be computed for them, and the estimate may
+    import the heavy machinery a cache hit should not load).
 
     Raises
     ------
@@ -121,7 +125,7 @@ def check_products(scene: Scene, objects: dict) -> list[str]:
             curve = objects[product["curve"]]
             _implicit_ready(curve, f"{where}.curve", product["curve"])
             n = curve.degree
-            if n > WARN_IMPLICIT_DEGREE:
+            if n > WARN_IMPLICIT_DEGREE and product["name"] not in cached:
                 warnings.append(
                     f"{where} ({product['name']}): implicit equation of degree {n} with {(n + 1) * (n + 2) // 2} "
                     f"exact coefficients; expect minutes above degree {WARN_IMPLICIT_DEGREE} (degree 40: > 300 s)"
@@ -132,7 +136,7 @@ def check_products(scene: Scene, objects: dict) -> list[str]:
                 _implicit_ready(curve, f"{where}.curves[{k}]", name)
             degree = a.degree * b.degree
             _check_degree(degree, where, "the intersection polynomial")
-            if degree > WARN_INTERSECTION_DEGREE:
+            if degree > WARN_INTERSECTION_DEGREE and product["name"] not in cached:
                 warnings.append(
                     f"{where} ({product['name']}): intersection polynomial of degree {degree} "
                     f"(= {a.degree} x {b.degree}) with exact root isolation; expect minutes above degree {WARN_INTERSECTION_DEGREE}"

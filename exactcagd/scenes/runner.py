@@ -78,9 +78,9 @@ class Runner:
         self.cache = ProductCache(self.cache_dir)
         self.use_cache = use_cache
         self.objects = self._build_objects()
-        self.warnings = check_products(scene, self.objects)
         self._specs = {p["name"]: p for p in scene.products}
         self._keys: dict = {}
+        self.warnings = check_products(scene, self.objects, cached={p["name"] for p in scene.products if self._is_cached(p)})
         self.published = False
 
     # ------------------------------------------------------------------ objects
@@ -113,13 +113,16 @@ class Runner:
             self._keys[name] = product_key(product, inputs, dependencies, self.scene.float_policy)
         return self._keys[name]
 
+    def _is_cached(self, product: dict) -> bool:
+        return self.use_cache and self.cache.lookup(self.cache_key(product)) is not None
+
     def plan(self) -> list[PlanItem]:
+        """What each product computes and skips; a cached product computes nothing (its outputs are copied)."""
         items = []
         for product in self.scene.products:
-            key = self.cache_key(product)
-            cached = self.use_cache and self.cache.lookup(key) is not None
-            needs, skips = handlers.plan(product, self)
-            items.append(PlanItem(product, key, cached, needs, skips))
+            cached = self._is_cached(product)
+            needs, skips = ([], []) if cached else handlers.plan(product, self)
+            items.append(PlanItem(product, self.cache_key(product), cached, needs, skips))
         return items
 
     # ------------------------------------------------------------------ running
