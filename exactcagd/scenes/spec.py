@@ -31,8 +31,14 @@ Numbers are integers or ``"p/q"``/decimal strings (exact); floats only under
 which places ``(i/(nu-1), j/(nv-1), z)`` with ``z`` a polynomial expression in x, y
 with rational coefficients (evaluated exactly).
 
-Everything is checked before any work starts: unknown keys, wrong shapes, huge
-degrees, absurd counts, NaN, unsafe names.
+Everything the text decides is checked before any work starts: unknown keys, wrong
+shapes, huge degrees, absurd counts, NaN, unsafe names, non-positive weights, references
+that are not names of this scene.  Inputs are bounded *before* they are evaluated
+(``LIMITS``): number strings by their digits and decimal exponent (``"1e100000000"`` is
+refused, not expanded), height expressions by length, node count, depth, degree and an
+estimate of their coefficient size taken from the syntax tree.  What needs the built
+objects (a 3-D or out-of-domain domain curve, a product kind that does not fit its input,
+result degrees) is checked next by :mod:`exactcagd.scenes.checks`, still before any work.
 """
 
 from __future__ import annotations
