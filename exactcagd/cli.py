@@ -36,7 +36,8 @@ CAPABILITIES = [
     ("exactcagd.numeric.roots", "Bernstein root finding with certified enclosures (exact isolation as reference)"),
     ("exactcagd.numeric.interval", "interval arithmetic and interval Bezier curves"),
     ("exactcagd.numeric.intersection", "curve intersection: subdivision, interval, Bezier clipping, exact"),
-    ("exactcagd.scenes", "scene files, lazy planner, runner, reference data"),
+    ("exactcagd.scenes", "scene files, lazy planner, runner"),
+    ("exactcagd.refdata", "reference data suites for testing other kernels: 12 kinds, hard families, JSON Schemas"),
 ]
 
 
