@@ -314,14 +314,15 @@ def test_result_degree_limit_checked_at_plan_time(tmp_path):
 
 def test_large_exact_products_get_a_warning_in_plan(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(handlers, "compute", lambda *a: pytest.fail("plan computed"))
-    points = [[f"{i}/14", f"{(i * 5) % 14}/14"] for i in range(14)]  # degree 13
+    points = [[f"{i}/21", f"{(i * 5) % 21}/21"] for i in range(21)]  # degree 20
     data = _with_products([{"kind": "implicit", "name": "imp", "curve": "big"}, {"kind": "intersections", "name": "cut", "curves": ["big", "big2"]}],
                           big={"type": "bezier", "control_points": points}, big2={"type": "bezier", "control_points": points[::-1]})
     path = write_scene(tmp_path, data)
     assert main(["plan", str(path), "--out", str(tmp_path / "out")]) == 0
     out = capsys.readouterr().out
-    assert "warning: products[0] (imp): implicit equation of degree 13 with 105 exact coefficients" in out
-    assert "warning: products[1] (cut): intersection polynomial of degree 169" in out
+    assert "warning: products[0] (imp): implicit equation of degree 20 with 231 exact coefficients, estimated ~18 s" in out
+    assert "warning: products[1] (cut): intersection polynomial of degree 400" in out
+    assert "implicit equation of big (moving_lines, degree 20, ~18 s)" in out
 
 
 def test_exact_domain_check_accepts_a_curve_whose_hull_leaves_the_domain(tmp_path):

@@ -15,7 +15,7 @@ from ..errors import NotSupportedError
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve, BSplineSurface
-from .checks import result_degree
+from .checks import implicit_seconds, result_degree
 from .serialize import to_json_value
 from .spec import DEFAULT_APPROXIMATION
 
@@ -61,7 +61,8 @@ def plan(product: dict, runner) -> tuple[list[str], list[str]]:
             skips.append(f"exact composition of {c} on {s}: a picture needs points, not the degree-N(l+m) curve")
         return needs, skips
     if kind == "implicit":
-        return [f"implicit equation of {product['curve']} ({product.get('method', 'moving_lines')})"], []
+        n = objects[product["curve"]].degree
+        return [f"implicit equation of {product['curve']} ({product.get('method', 'moving_lines')}, degree {n}, ~{implicit_seconds(n):.2g} s)"], []
     if kind == "intersections":
         return [f"exact intersections of {product['curves'][0]} and {product['curves'][1]}"], []
     if kind == "ffd":
