@@ -10,7 +10,8 @@ published JSON Schemas in ``exactcagd/refdata/schemas/``.
 * :mod:`.stream` -- batched, ordered, constant-memory generation (processes or Dask);
 * :mod:`.suite` -- single-kind files, the standard suite and the CLI;
 * :mod:`.manifest` -- versions, counts, schema and file hashes;
-* :mod:`.formats` -- the ``bezier`` package's functional-test fixture layout.
+* :mod:`.formats` -- the ``bezier`` package's functional-test fixture layout;
+* :mod:`.schemagen` -- builds the published JSON Schemas (``python -m exactcagd.refdata.schemagen``).
 
 >>> from exactcagd.refdata import make_record
 >>> make_record("roots", "random", seed=0, index=0, degrees=(3,))["id"]

@@ -1,7 +1,8 @@
 """``manifest.json`` of a reference suite: what was generated, by what, and hashes to check it.
 
 Fields: ``format_version``, ``exactcagd`` (version and git commit when the package
-runs from a git checkout), ``dependencies`` (versions), ``seed``, ``kinds`` (names in
+runs from a git checkout), ``dependencies`` (versions), ``seed`` and ``record_rng`` (how
+each record's random source derives from it), ``kinds`` (names in
 file order), ``counts`` (per kind and family), ``schemas`` (per kind: file name and
 sha256 of the published JSON Schema), ``files`` (per data file: kind, records, sha256).
 Nothing in it depends on the time or the executor, so two runs give the same bytes.
@@ -69,6 +70,7 @@ def build_manifest(seed: int, kinds: list, counts: dict, files: dict) -> dict:
         "exactcagd": {"version": __version__, "git_commit": git_commit()},
         "dependencies": dependency_versions(),
         "seed": seed,
+        "record_rng": "random.Random('exactcagd-refdata:<kind>:<family>:<seed>:<index>') (Python's random, string seed); a record is a pure function of its id, seed and degrees",
         "kinds": list(kinds),
         "counts": counts,
         "schemas": {kind: {"file": f"schemas/{kind}.schema.json", "sha256": sha256_file(schema_path(kind))} for kind in kinds},

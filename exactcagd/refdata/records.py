@@ -28,7 +28,7 @@ import numpy as np
 from gmpy2 import mpq
 
 from ..exact.algebraic import RealAlgebraic
-from ..exact.scalars import to_rational
+from ..exact.scalars import rational_str, to_float, to_rational
 
 __all__ = ["FORMAT_VERSION", "exact", "f64", "f64_float", "algebraic", "with_f64", "nested_exact", "nested_f64", "parse_exact"]
 
@@ -47,9 +47,7 @@ def _as_mpq(x) -> mpq:
 def exact(x) -> int | str:
     """The exact JSON form of a rational: an ``int``, or ``"p/q"`` in lowest terms."""
     q = _as_mpq(x)
-    if q.denominator == 1:
-        return int(q.numerator)
-    return f"{q.numerator}/{q.denominator}"
+    return int(q.numerator) if q.denominator == 1 else rational_str(q)
 
 
 def parse_exact(value) -> mpq:
@@ -62,13 +60,18 @@ def parse_exact(value) -> mpq:
 def _round_rational(q: mpq) -> float:
     """Correctly rounded float64 of ``q`` (overflow gives the signed infinity, as IEEE rounding does)."""
     try:
-        return int(q.numerator) / int(q.denominator)
+        return to_float(q)
     except OverflowError:
         return math.inf if q > 0 else -math.inf
 
 
 def f64_float(x) -> float:
-    """The float64 nearest to the exact value ``x`` (rational or :class:`RealAlgebraic`)."""
+    """The float64 nearest to the exact value ``x`` (rational or :class:`RealAlgebraic`).
+
+    For an irrational number the isolating interval is refined until both ends round
+    to the same double (``float(RealAlgebraic)`` takes a midpoint of a relative width
+    2^-60 interval instead, which can misround a value very close to a rounding tie).
+    """
     if isinstance(x, RealAlgebraic) and not x.is_rational:
         lo, hi = x.interval()
         while _round_rational(lo) != _round_rational(hi):
