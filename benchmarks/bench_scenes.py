@@ -43,7 +43,7 @@ def run_planned(scene_dict: dict):
 
     with tempfile.TemporaryDirectory() as tmp:
         runner = Runner(parse_scene(scene_dict), tmp, use_cache=False)
-        return runner.run(progress=lambda line: None)["results"]["trim_image"]
+        return runner.run(progress=lambda line: None).results["trim_image"]
 
 
 def run_eager(scene_dict: dict):

@@ -457,3 +457,13 @@ def test_height_expression_values_agree_with_sympy():
             value = f(mpq(a), mpq(b))
             assert sp.Rational(str(value)) == reference.subs({x: sp.Rational(a), y: sp.Rational(b)})
     assert f.degree == sp.Poly(reference, x, y).total_degree()
+
+
+def test_run_report_keeps_the_exact_results(tmp_path):
+    """``Runner.run`` returns the exact results it computed (the scenes benchmark reads them)."""
+    runner = Runner(parse_scene(copy.deepcopy(PLAIN)), tmp_path, use_cache=False)
+    report = runner.run(progress=lambda line: None)
+    assert report.failed == [] and set(report.results) == {"crossed", "image", "cuts"}
+    written = json.loads((tmp_path / "small" / "image.json").read_text())["result"]["pieces"]
+    assert len(report.results["image"].pieces) == len(written) == 1
+    assert report.infos["image"]["status"] == "computed"

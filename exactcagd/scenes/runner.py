@@ -52,11 +52,17 @@ class PlanItem:
 
 @dataclass
 class RunReport:
-    """What a run did: per product ``status`` (computed / cached / failed), ``seconds``, ``summary`` or ``error``."""
+    """What a run did.
+
+    ``infos``: per product ``status`` (computed / cached / failed), ``seconds``, ``summary``
+    or ``error``; ``failed``: names of the failed products; ``results``: the exact results
+    computed in this run (cached products are not loaded).
+    """
 
     infos: dict
     failed: list
     scene_dir: Path
+    results: dict = field(default_factory=dict)
 
 
 class ProductFailed(ExactCAGDError):
@@ -172,7 +178,7 @@ class Runner:
             atomic_write_bytes(stage / "timings.json", (json.dumps(report, indent=1) + "\n").encode())
         self.published = True
         merged = {name: {**infos[name], **timings[name]} for name in infos}
-        return RunReport(merged, [n for n in infos if n in self._failed], self.scene_dir)
+        return RunReport(merged, [n for n in infos if n in self._failed], self.scene_dir, self._results)
 
     def _product(self, item: PlanItem):
         """``(files, info, status, timings)`` of one product: from the cache, or computed and cached."""
