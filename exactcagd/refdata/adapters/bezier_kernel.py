@@ -8,7 +8,9 @@ only triangular surfaces), so rational records are :class:`Unsupported`.  Calls 
 * ``degree_elevation``: ``Curve.elevate`` (once per degree);
 * ``subdivision``: ``Curve.specialize(0, t)`` and ``specialize(t, 1)``;
 * ``inversion``: ``Curve.locate(point)``;
-* ``intersect``: ``Curve.intersect(other)`` (geometric strategy, the default);
+* ``intersect``: the ``all_intersections`` that ``Curve.intersect`` runs with its default
+  geometric strategy (compiled when built), keeping its flag for coincident curves,
+  which ``Curve.intersect`` drops;
 * ``roots``: ``Curve.intersect`` of the graph ``(t, f(t))`` with the segment ``[0, 1] x {0}``
   (the package has no public root finder; this is how a user of it finds roots).
 """
@@ -32,6 +34,7 @@ class BezierAdapter(Adapter):
     def __init__(self):
         self.bezier = require_peer("bezier")
         self.hazmat = require_peer("bezier.hazmat.curve_helpers")
+        self.geometric = require_peer("bezier.curve")._geometric_intersection  # compiled when built
 
     def version(self) -> str:
         return self.bezier.__version__
@@ -70,10 +73,11 @@ class BezierAdapter(Adapter):
         return {"params": out}
 
     def intersect(self, inp):
-        c1, _ = self._curve(inp.sub("curve1"))
-        c2, _ = self._curve(inp.sub("curve2"))
-        params = c1.intersect(c2)
-        return {"intersections": params.T.tolist()}
+        _, n1 = self._curve(inp.sub("curve1"))
+        _, n2 = self._curve(inp.sub("curve2"))
+        # what Curve.intersect runs (geometric strategy), keeping its 'coincident' flag
+        params, coincident = self.geometric.all_intersections(n1, n2)
+        return {"intersections": params.T.tolist(), "overlap": bool(coincident)}
 
     def roots(self, inp):
         coeffs = inp.floats("coefficients")
