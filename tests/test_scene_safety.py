@@ -467,3 +467,18 @@ def test_run_report_keeps_the_exact_results(tmp_path):
     written = json.loads((tmp_path / "small" / "image.json").read_text())["result"]["pieces"]
     assert len(report.results["image"].pieces) == len(written) == 1
     assert report.infos["image"]["status"] == "computed"
+
+
+def test_schema_bounds_number_strings_like_the_validator():
+    """The published schema refuses an over-long number string, as parse_scene does."""
+    jsonschema = pytest.importorskip("jsonschema")
+    import exactcagd.scenes as pkg
+
+    schema = json.loads((Path(pkg.__file__).parent / "scene.schema.json").read_text())
+    validator = jsonschema.Draft202012Validator(schema)
+    data = copy.deepcopy(SCENE)
+    assert not list(validator.iter_errors(data))
+    data["curves"]["k"]["control_points"][0][0] = "1" * 2041
+    assert list(validator.iter_errors(data))
+    with pytest.raises(SceneError, match="curves.k.control_points"):
+        parse_scene(data)
