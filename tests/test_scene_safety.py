@@ -482,3 +482,50 @@ def test_schema_bounds_number_strings_like_the_validator():
     assert list(validator.iter_errors(data))
     with pytest.raises(SceneError, match="curves.k.control_points"):
         parse_scene(data)
+
+
+# ----------------------------------------------------------------------------- scene fuzzing
+def _paths(obj, prefix=()):
+    if prefix:
+        yield prefix
+    if isinstance(obj, dict):
+        for k, v in obj.items():
+            yield from _paths(v, prefix + (k,))
+    elif isinstance(obj, list):
+        for i, v in enumerate(obj):
+            yield from _paths(v, prefix + (i,))
+
+
+_HOSTILE = [None, True, 0, -1, 10**30, 2**70, 1.5, float("inf"), float("nan"), "", "x", "1/0", "1e99999", "0x10",
+            "1_000", " 1 / 3 ", "1/-3", "\u0663", [], [1], [[1]], {}, {"a": 1}, [[["1", 2]]], "x*y", "1/(x-x)",
+            "((x+1)**12)**12", [0, 0, 0, 1, 1, 1], ["k", "k"], ["s"], "s", "k"]
+
+
+def test_mutated_scenes_give_a_runner_or_a_scene_error():
+    """The fuzzer as a property: any one or two values of a valid scene replaced by hostile ones
+    gives a checked Runner or an ExactCAGDError (never a generic exception), within 2 s."""
+    from hypothesis import HealthCheck, given, settings
+    from hypothesis import strategies as st
+
+    paths = list(_paths(SCENE))
+
+    @settings(max_examples=120, deadline=None, suppress_health_check=list(HealthCheck))
+    @given(st.lists(st.tuples(st.sampled_from(paths), st.sampled_from(_HOSTILE)), min_size=1, max_size=2))
+    def check(mutations):
+        data = copy.deepcopy(SCENE)
+        for path, value in mutations:
+            target = data
+            try:
+                for key in path[:-1]:
+                    target = target[key]
+                target[path[-1]] = copy.deepcopy(value)
+            except (KeyError, IndexError, TypeError):
+                continue
+        start = time.perf_counter()
+        try:
+            Runner(parse_scene(data), "/nonexistent/out")
+        except ExactCAGDError:
+            pass
+        assert time.perf_counter() - start < 2.0
+
+    check()
