@@ -173,6 +173,7 @@ def test_bezier_fixture_layout(tmp_path):
         assert [len(row) for row in case["intersections"]] == [n, n]
         # each parameter is a root of its polynomial (the polynomials are exact, the values rounded)
         for params, polys in (("curve1_params", "curve1_polys"), ("curve2_params", "curve2_polys")):
+            assert all(isinstance(c, int) for poly in case[polys] for c in poly)  # the harness requires integers
             for value, poly in zip(_convert_float(case[params]), case[polys]):
                 scale = sum(abs(c) for c in poly)
                 assert abs(sum(c * value**k for k, c in enumerate(poly))) <= 1e-12 * scale

@@ -213,7 +213,11 @@ def _random_bspline_curve(rng, family: str, degree: int) -> BSplineCurve:
     knots = fam.clamped_knots(rng, degree, n_points)
     wide = family == "weights_wide"
     w = fam.weights(rng, n_points, wide) if (wide or rng.random() < 0.5) else None
-    return BSplineCurve(fam.points(rng, n_points, rng.choice((2, 3))), knots, w)
+    pts = fam.points(rng, n_points, rng.choice((2, 3)))
+    if family == "extreme_coefficients":
+        scale = mpq(2) ** rng.choice(fam.SCALE_EXPONENTS)
+        pts = [[x * scale for x in p] for p in pts]
+    return BSplineCurve(pts, knots, w)
 
 
 def _random_bspline_surface(rng, family: str, p: int, q: int) -> BSplineSurface:
@@ -239,7 +243,7 @@ def _knot_params(rng, family: str, knots, count: int) -> list:
 
 def _bspline_eval(family):
     def build(rng, degrees):
-        if rng.random() < 0.5 or family == "high_degree":
+        if rng.random() < 0.5 or family in ("high_degree", "extreme_coefficients"):
             curve = _random_bspline_curve(rng, family, degrees[0])
             params = _knot_params(rng, family, curve.knots, 3)
             inp = {"object": "curve", **bspline_curve_dict(curve)}
@@ -596,9 +600,9 @@ KINDS = {
     for k in (
         _kind("curve_eval", "Bézier / rational Bézier curve: point, first and second derivative at parameters", (3,), _curve_eval, _EVAL_FAMILIES),
         _kind("surface_eval", "Bézier / rational Bézier surface: point and unnormalised normal S_u x S_v", (2, 2), _surface_eval, _EVAL_FAMILIES),
-        _kind("bspline_eval", "B-spline / NURBS curve and surface evaluation (de Boor)", (3, 2), _bspline_eval, ("random", "endpoints", "weights_wide", "high_degree")),
-        _kind("knot_insertion", "B-spline / NURBS curve knot insertion (Boehm)", (3,), _knot_insertion, ("random", "endpoints", "weights_wide", "high_degree")),
-        _kind("bezier_extraction", "B-spline / NURBS curve to Bézier segments", (3,), _bezier_extraction, ("random", "weights_wide", "high_degree")),
+        _kind("bspline_eval", "B-spline / NURBS curve and surface evaluation (de Boor)", (3, 2), _bspline_eval, ("random", "endpoints", "weights_wide", "extreme_coefficients", "high_degree")),
+        _kind("knot_insertion", "B-spline / NURBS curve knot insertion (Boehm)", (3,), _knot_insertion, ("random", "endpoints", "weights_wide", "extreme_coefficients", "high_degree")),
+        _kind("bezier_extraction", "B-spline / NURBS curve to Bézier segments", (3,), _bezier_extraction, ("random", "weights_wide", "extreme_coefficients", "high_degree")),
         _kind("degree_elevation", "Bézier / rational Bézier degree elevation", (3,), _degree_elevation, ("random", "weights_wide", "extreme_coefficients", "high_degree")),
         _kind("subdivision", "Bézier / rational Bézier subdivision (de Casteljau)", (3,), _subdivision, ("random", "endpoints", "weights_wide", "extreme_coefficients", "high_degree")),
         _kind("compose", "composition F(K(t)) of a Bézier or NURBS surface with a domain curve", (2, 1, 2), _compose, ("random", "nurbs", "weights_wide")),
