@@ -1,7 +1,8 @@
 """The ``exactcagd`` command line.
 
 Subcommands: ``info`` (capabilities), ``verify`` (proof ledger), ``plan`` / ``run``
-(scenes), ``refdata`` (exact reference data), ``bench`` (benchmarks).  Every
+(scenes), ``refdata`` (exact reference data), ``conformance`` (grade another kernel on
+reference data), ``bench`` (benchmarks).  Every
 subcommand imports its machinery lazily so ``exactcagd --version`` stays instant.
 
 >>> from exactcagd.cli import main

@@ -321,3 +321,12 @@ def test_compose_under_estimate_is_charged_above_noise_only(suite):
     assert grade(1e-9, 1e-12) == 1  # 1e-9 off, 1e-12 claimed: an under-estimate
     assert grade(1e-9, 1e-8) == 0  # honest claim
     assert grade(0.0, 0.0) == 0  # correctly rounded samples against a claim of 0: float noise
+
+
+def test_bad_output_folder(suite, tmp_path, capsys):
+    target = tmp_path / "a-file"
+    target.write_text("x")
+    for out in ("/dev/null", str(target)):
+        assert main(["conformance", "--kernel", "geomdl", "--suite", str(suite), "--out", out]) == 2
+        assert "--out" in capsys.readouterr().err
+    assert target.read_text() == "x"

@@ -537,8 +537,10 @@ class _Timeout(Exception):
 
 
 def _call_with_timeout(func, arg, seconds: int):
-    if seconds <= 0 or not hasattr(signal, "SIGALRM"):
-        return func(arg)
+    import threading
+
+    if seconds <= 0 or not hasattr(signal, "SIGALRM") or threading.current_thread() is not threading.main_thread():
+        return func(arg)  # SIGALRM only exists on POSIX and only reaches the main thread
 
     def alarm(signum, frame):
         raise _Timeout(f"no answer within {seconds} s")
