@@ -14,6 +14,7 @@ so the bytes never depend on the executor or the batch size.
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import math
 import sys
@@ -122,9 +123,14 @@ def _dask_client(jobs: int, scheduler):
         client = Client(scheduler)
         cluster = None
     else:
-        cluster = LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True, dashboard_address=":0")
+        import logging
+
+        cluster = LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True, dashboard_address=":0", silence_logs=logging.ERROR)
         client = Client(cluster)
-    print(f"dask dashboard: {client.dashboard_link}", file=sys.stderr, flush=True)
+    link = client.dashboard_link
+    if importlib.util.find_spec("bokeh") is None and cluster is not None:
+        link += " (served only when bokeh is installed)"
+    print(f"dask dashboard: {link}", file=sys.stderr, flush=True)
     return client, cluster
 
 
