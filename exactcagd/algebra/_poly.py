@@ -17,11 +17,14 @@ graded reverse lexicographic order with ``x > y`` is positive.
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import flint
 import numpy as np
 import sympy
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import DegreeError, DimensionError, InputError, WeightError
 from ..exact import bernstein as bz
 from ..exact.scalars import from_fmpq, to_fmpq
@@ -45,6 +48,41 @@ __all__ = [
 
 X_SYM, Y_SYM = sympy.symbols("x y")
 T_SYM = sympy.Symbol("t")
+
+
+def polynomial_input(value, name: str):
+    """A user polynomial for the implicit algebra: a sympy ``Poly`` or a polynomial sympy
+    expression (an ``int``/``Fraction``/``mpq`` constant becomes a sympy ``Rational``).
+
+    Strings are refused (``sympify`` would evaluate them: ``"1e100000000"`` runs for
+    minutes), as are bools, bytes, ``oo``/``nan`` and non-polynomial expressions
+    (``1/x``, ``sin(x)``), with :class:`InputError` naming ``name``; the total degree is
+    bounded by the limit ``max_degree``.
+
+    >>> x = sympy.Symbol("x")
+    >>> polynomial_input(x**2 - 1, "f")
+    x**2 - 1
+    """
+    if isinstance(value, sympy.Poly):
+        limits.check("max_degree", value.total_degree(), f"{name}: total degree")
+        return value
+    if isinstance(value, (bool, str, bytes, bytearray)) or not isinstance(value, (sympy.Basic, int, Fraction, type(mpq(0)))):
+        raise InputError(f"{name}: expected a sympy expression or Poly, got {type(value).__name__} {str(value)[:40]!r}")
+    if not isinstance(value, sympy.Basic):
+        value = sympy.Rational(int(value.numerator), int(value.denominator))
+    if not isinstance(value, sympy.Expr) or value.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan) or not value.is_polynomial():
+        raise InputError(f"{name}: {str(value)[:60]} is not a polynomial")
+    for power in value.atoms(sympy.Pow):  # x**(10**6) is checked before any expansion
+        if power.exp.is_Integer:
+            limits.check("max_degree", int(power.exp), f"{name}: exponent of {str(power.base)[:30]}")
+    return value
+
+
+def symbol_input(value, name: str) -> sympy.Symbol:
+    """A sympy ``Symbol`` (a variable to eliminate or a generator), else :class:`InputError`."""
+    if not isinstance(value, sympy.Symbol):
+        raise InputError(f"{name}: expected a sympy Symbol, got {type(value).__name__} {str(value)[:40]!r}")
+    return value
 
 
 def zctx(names, order: str = "degrevlex") -> flint.fmpz_mpoly_ctx:
@@ -101,6 +139,7 @@ def curve_power(curve) -> tuple[flint.fmpz_poly, flint.fmpz_poly, flint.fmpz_pol
         raise InputError(f"expected a BezierCurve, got {type(curve).__name__}")
     if curve.dimension != 2:
         raise DimensionError(f"implicit algebra needs a planar curve, got dimension {curve.dimension}")
+    limits.check("max_implicit_degree", curve.degree, f"implicit algebra of a degree-{curve.degree} curve (implicit degree up to {curve.degree})")
     power = bz.to_power(curve.homogeneous())
     comps = [fmpq_poly_of(power[:, j]) for j in range(3)]
     return tuple(primitive_fmpz_polys(comps))

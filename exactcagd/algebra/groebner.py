@@ -28,7 +28,7 @@ import flint
 import sympy
 
 from ..errors import InputError
-from ._poly import sympy_to_mpoly, zctx
+from ._poly import polynomial_input, symbol_input, sympy_to_mpoly, zctx
 
 __all__ = [
     "groebner",
@@ -51,7 +51,9 @@ FLINT_LIMITS_POSITIVE_DIM = (60, 2000, 1024)  # lex on positive-dimensional idea
 def _check(gens, order):
     if order not in ORDERS:
         raise InputError(f"unknown monomial order {order!r}; choose one of {sorted(ORDERS)}")
-    gens = [sympy.sympify(g) for g in gens]
+    if not isinstance(gens, (list, tuple)):
+        raise InputError(f"gens: expected a list of sympy Symbols, got {type(gens).__name__}")
+    gens = [symbol_input(g, f"gens[{i}]") for i, g in enumerate(gens)]
     if len(set(gens)) != len(gens) or not all(g.is_Symbol for g in gens):
         raise InputError("gens must be distinct symbols")
     return gens
@@ -108,8 +110,15 @@ def groebner_basis(polys, gens, order: str = "lex", engine: str = "auto") -> lis
         limits), ``"buchberger"`` or ``"f5b"`` (sympy).
     """
     gens = _check(gens, order)
+    if not isinstance(polys, (list, tuple)):
+        raise InputError(f"polys: expected a list of polynomials, got {type(polys).__name__}")
+    polys = [polynomial_input(p, f"polys[{i}]") for i, p in enumerate(polys)]
     exprs = [p.as_expr() if isinstance(p, sympy.Poly) else sympy.sympify(p) for p in polys]
     exprs = [e for e in exprs if sympy.expand(e) != 0]
+    for i, e in enumerate(exprs):
+        domain = sympy.Poly(e, *gens).domain
+        if not (domain.is_ZZ or domain.is_QQ):
+            raise InputError(f"polys[{i}]: coefficients must be rational in {gens}, got domain {domain}")
     if not exprs:
         return []
     if engine in ("buchberger", "f5b"):

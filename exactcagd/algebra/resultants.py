@@ -32,7 +32,7 @@ from gmpy2 import mpq
 
 from ..errors import InputError
 from ..exact.scalars import to_rational
-from ._poly import mpoly_to_sympy, zctx
+from ._poly import mpoly_to_sympy, polynomial_input, symbol_input, zctx
 
 __all__ = [
     "bracket",
@@ -300,7 +300,7 @@ def _flint_resultant(a: list, b: list):
 # ---------------------------------------------------------------------------- sympy front end
 def _split(f, g, var):
     """Common generators, coefficient lists in ``var`` over Z[others], denominators."""
-    var = sympy.sympify(var)
+    f, g, var = polynomial_input(f, "f"), polynomial_input(g, "g"), symbol_input(var, "var")
     fe = f.as_expr() if isinstance(f, sympy.Poly) else sympy.sympify(f)
     ge = g.as_expr() if isinstance(g, sympy.Poly) else sympy.sympify(g)
     if isinstance(f, sympy.Poly) and isinstance(g, sympy.Poly):

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import limits
 from ..errors import DimensionError, InputError, NotSupportedError, WeightError
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
@@ -61,6 +62,8 @@ def prepare(surface, curve, allow_outside: bool = False, box=((0, 1), (0, 1))) -
         The curve leaves ``box`` (default [0, 1]^2) and ``allow_outside`` is false.
     """
     _check_types(surface, curve)
+    l, m = surface.degree
+    limits.check("max_degree", curve.degree * (l + m), f"composition: degree N (l + m) of F(K(t)) for N = {curve.degree}, (l, m) = ({l}, {m})")
     hom = curve.homogeneous()
     if curve.is_rational and not all(w > 0 for w in hom[:, 2]):
         if check_weight_function(hom[:, 2], "weight function of the domain curve") < 0:

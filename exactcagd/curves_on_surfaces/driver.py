@@ -26,6 +26,7 @@ import mpmath
 import numpy as np
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import ExactCAGDError, InputError, NotSupportedError
 from ..exact import bernstein as bz
 from ..exact.scalars import rational_str, to_count, to_rational
@@ -90,6 +91,10 @@ class CurveOnSurface:
         there (joint point ``== D(t)`` and joint direction a positive multiple of
         ``D'(t)``).  ``False`` at joints carried by an isolating interval (irrational
         cuts), at stationary points, and at joints rounded by ``snap_bits``.
+    certified_by : dict
+        How many of the accepted distance certificates were decided in ball arithmetic
+        (``"ball"``, python-flint ``arb``) and how many needed exact rationals (``"exact"``)
+        because the ball test was inconclusive (:mod:`exactcagd.composition.ball`).
     """
 
     segments: list
@@ -109,6 +114,7 @@ class CurveOnSurface:
     closed: bool = False
     params: list = field(default_factory=list)
     ends: list = field(default_factory=list)
+    certified_by: dict = field(default_factory=dict)
 
     def __len__(self) -> int:
         return len(self.segments)
@@ -412,6 +418,12 @@ def approximate(
     angle = to_rational(angle_tol, where="angle_tol")
     if method in ("hyperbola", "polyline") and not (0 < angle < 180):
         raise InputError(f"angle tolerance must lie in (0, 180) degrees, got {angle}")
+    if snap_bits is not None:  # directions are rounded to snap_bits - 24 bits: at least one is needed
+        if to_count(snap_bits, where="snap_bits") < 25:
+            raise InputError(f"snap_bits must be None or an integer >= 25 (directions keep snap_bits - 24 bits), got {snap_bits!r}")
+        limits.check("max_input_bits", snap_bits, "snap_bits (bits of the rounded joint data)")
+    if to_count(max_segments, where="max_segments") < 1:
+        raise InputError(f"max_segments must be a positive integer, got {max_segments!r}")
     grid = SurfaceGrid(surface)
     if grid.dimension < 2:
         raise InputError("the surface must lie in a space of dimension >= 2")

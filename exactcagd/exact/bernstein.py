@@ -24,6 +24,7 @@ from functools import lru_cache
 import numpy as np
 from gmpy2 import bincoef, mpq, mpz
 
+from .. import limits
 from ..errors import DegreeError, InputError
 from .scalars import from_fmpq, to_fmpq, to_rational, to_rational_array
 
@@ -132,6 +133,7 @@ def elevate(c: np.ndarray, r: int = 1) -> np.ndarray:
     """
     if r < 0:
         raise DegreeError(f"elevation by a negative amount ({r}); use reduce_degree")
+    limits.check("max_degree", c.shape[0] - 1 + r, f"degree elevation by r = {r} of degree {c.shape[0] - 1}")
     if r == 0:
         return c.copy()
     n = c.shape[0] - 1
@@ -290,6 +292,7 @@ def product(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     ``C(m,i) a_i`` (a plain convolution).
     """
     m, n = a.shape[0] - 1, b.shape[0] - 1
+    limits.check("max_degree", m + n, f"Bernstein product of degrees {m} and {n}")
     scaled_a = np.array([binomial(m, i) for i in range(m + 1)], dtype=object).reshape((m + 1,) + (1,) * (a.ndim - 1)) * a
     scaled_b = np.array([binomial(n, j) for j in range(n + 1)], dtype=object).reshape((n + 1,) + (1,) * (b.ndim - 1)) * b
     conv = _convolve(scaled_a, scaled_b)

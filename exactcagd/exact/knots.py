@@ -15,9 +15,11 @@ Sources: notes (003) 6.3 (Bézier extraction), 6.7 (knot insertion, Boehm),
 from __future__ import annotations
 
 import bisect
+import collections
 
 import numpy as np
 
+from .. import limits
 from ..errors import DomainError, KnotError
 from .scalars import to_count, to_rational
 
@@ -46,6 +48,10 @@ def check_knots(knots, n_points: int, degree: int, clamped: bool = True, what: s
     """
     if degree < 0:
         raise KnotError(f"{what}: degree must be >= 0, got {degree}")
+    limits.check("max_degree", degree, f"{what}: degree {degree}")
+    if hasattr(knots, "__len__") and len(knots) != n_points + degree + 1:  # before converting them all
+        raise KnotError(f"{what} ({len(knots)} knots, {n_points} control points, degree {degree}): "
+                        f"{n_points} control points of degree {degree} need {n_points + degree + 1} knots")
     ks = tuple(to_rational(k, where=f"{what}[{i}]") for i, k in enumerate(knots))
     ctx = f"{what} ({len(ks)} knots, {n_points} control points, degree {degree})"
     expected = n_points + degree + 1
@@ -62,10 +68,11 @@ def check_knots(knots, n_points: int, degree: int, clamped: bool = True, what: s
         if ks[degree + 1] == ks[0] or ks[-degree - 2] == ks[-1]:
             raise KnotError(f"{ctx}: an end knot has multiplicity above degree + 1 = {degree + 1}")
     lo, hi = ks[degree], ks[-degree - 1]
-    for value in set(ks):
+    counts = collections.Counter(ks)  # one pass: the set-times-count loop was quadratic in the knot count
+    for value, count in counts.items():
         # only knots inside the domain limit continuity; unclamped vectors may repeat an end
-        if lo < value < hi and multiplicity(ks, value) > degree:
-            raise KnotError(f"{ctx}: interior knot {value} has multiplicity {multiplicity(ks, value)} above the degree {degree}")
+        if lo < value < hi and count > degree:
+            raise KnotError(f"{ctx}: interior knot {value} has multiplicity {count} above the degree {degree}")
     return ks
 
 

@@ -4,12 +4,20 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import limits
 from ..errors import DomainError, InputError, WeightError
 from ..exact.scalars import to_rational, to_rational_array
 
 
-def point_array(points, ndim: int, what: str) -> np.ndarray:
-    """Exact object array of points with ``ndim`` index axes plus one coordinate axis."""
+def point_array(points, ndim: int, what: str, bezier: bool = False) -> np.ndarray:
+    """Exact object array of points with ``ndim`` index axes plus one coordinate axis.
+
+    The number of control points is bounded by the limit ``max_control_points`` and, for
+    a Bézier object (``bezier=True``), the degree along each index axis by ``max_degree``
+    (:mod:`exactcagd.limits`), from the lengths of the nested input before any number is
+    converted.
+    """
+    _check_counts(points, ndim, what, bezier)
     array = to_rational_array(points, where=what)
     if array.ndim != ndim + 1:
         raise InputError(
@@ -19,6 +27,42 @@ def point_array(points, ndim: int, what: str) -> np.ndarray:
     if 0 in array.shape:
         raise InputError(f"{what}: empty (shape {array.shape})")
     return array
+
+
+def _check_counts(points, ndim: int, what: str, bezier: bool) -> None:
+    lengths = []
+    level = points
+    for _ in range(ndim):
+        try:
+            lengths.append(len(level))
+            level = level[0] if lengths[-1] else ()
+        except (TypeError, IndexError, KeyError):
+            return  # not nested as expected: to_rational_array / the shape check report it
+    check_size(lengths, what, bezier)
+
+
+def check_size(lengths, what: str, bezier: bool = True) -> None:
+    """Limits of a control array with index-axis ``lengths`` (``(n + 1,)`` or ``(l + 1, m + 1)``).
+
+    >>> check_size((4, 4), "control_net")
+    """
+    total = 1
+    for length in lengths:
+        total *= length
+        if bezier:
+            limits.check("max_degree", length - 1, f"{what}: degree {length - 1} (from {length} control points)")
+    limits.check("max_control_points", total, f"{what}: {total} control points")
+
+
+def instance_of(value, cls, what: str):
+    """``value`` if it is a ``cls`` (e.g. a :class:`BezierCurve`), else :class:`InputError` naming ``what``.
+
+    >>> instance_of(3, int, "n")
+    3
+    """
+    if not isinstance(value, cls):
+        raise InputError(f"{what}: expected a {cls.__name__}, got {type(value).__name__}")
+    return value
 
 
 def weight_array(weights, shape: tuple, what: str) -> np.ndarray | None:

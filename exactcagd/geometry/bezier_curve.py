@@ -49,7 +49,7 @@ class BezierCurve:
     __slots__ = ("_points", "_weights")
 
     def __init__(self, control_points, weights=None):
-        points = point_array(control_points, 1, "control_points")
+        points = point_array(control_points, 1, "control_points", bezier=True)
         self._points = points
         self._weights = weight_array(weights, (points.shape[0],), "weights")
 

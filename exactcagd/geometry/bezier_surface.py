@@ -48,7 +48,7 @@ class BezierSurface:
     __slots__ = ("_net", "_weights")
 
     def __init__(self, control_net, weights=None):
-        net = point_array(control_net, 2, "control_net")
+        net = point_array(control_net, 2, "control_net", bezier=True)
         self._net = net
         self._weights = weight_array(weights, net.shape[:2], "weights")
 

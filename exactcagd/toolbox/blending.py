@@ -24,9 +24,10 @@ import numpy as np
 import sympy
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import DegreeError, DimensionError, InputError
 from ..exact import bernstein as bz
-from ..exact.scalars import to_rational, to_rational_array
+from ..exact.scalars import to_count, to_rational, to_rational_array
 from ..geometry.bezier_curve import BezierCurve
 from . import _exact as ex
 
@@ -158,6 +159,8 @@ def check_properties(funcs, t=T, domain=(0, 1)) -> BlendingReport:
 
 # ---------------------------------------------------------------- named bases
 def bernstein_basis(n: int, t=T) -> list:
+    n = to_count(n, where="bernstein_basis: n")
+    limits.check("max_degree", n, "bernstein_basis: n")
     return [sympy.binomial(n, i) * t**i * (1 - t) ** (n - i) for i in range(n + 1)]
 
 

@@ -33,6 +33,7 @@ from gmpy2 import mpq
 from ..errors import DegreeError, DimensionError, DomainError, InputError
 from ..exact.algebraic import RealAlgebraic, real_roots
 from ..exact.scalars import to_rational
+from ..geometry._validate import instance_of
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from .surfaces import _oriented, _to_corner, cross, dot
@@ -113,6 +114,7 @@ def curve_start_curvature(curve: BezierCurve) -> CurveCurvature:
 
 def curve_curvature(curve: BezierCurve, t) -> CurveCurvature:
     """Curvature at any ``t`` in [0, 1]: subdivide so ``t`` is an end, then (15.44)."""
+    instance_of(curve, BezierCurve, "curve_curvature: curve")
     t = to_rational(t, where="t")
     if not 0 <= t <= 1:
         raise DomainError("t outside [0, 1]")

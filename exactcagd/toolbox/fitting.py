@@ -28,11 +28,12 @@ import math
 import numpy as np
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import DimensionError, DomainError, InputError, KnotError, NotSupportedError
 from ..exact import bernstein as bz
 from ..exact import knots as kn
 from ..exact.quadratic import sqrt_rational
-from ..exact.scalars import to_rational, to_rational_array
+from ..exact.scalars import to_count, to_rational, to_rational_array
 from ..geometry.bspline import BSplineCurve
 from . import _exact as ex
 from . import _qp
@@ -212,10 +213,14 @@ def gram_matrix(knots, degree: int, derivative: int = 0) -> np.ndarray:
     ``1/(b - a)`` each), gives ``G += (b - a) C^T G_q C`` with the Bernstein Gram matrix
     ``G_q`` -- one exact mechanism (Bernstein products, notes 9.3 / 2.15).
     """
-    knots = tuple(to_rational(k) for k in knots)
+    if isinstance(knots, (str, bytes, bytearray)) or not hasattr(knots, "__len__"):
+        raise KnotError(f"knots: expected a sequence of numbers, got {type(knots).__name__}")
+    degree, derivative = to_count(degree, where="degree"), to_count(derivative, where="derivative order")
     n = len(knots) - degree - 1
-    if derivative < 0:
-        raise InputError("derivative order must be >= 0")
+    if n < 1:
+        raise KnotError(f"knots: {len(knots)} knots leave no basis function of degree {degree}")
+    limits.check("max_control_points", n, "gram_matrix: basis functions")
+    knots = tuple(to_rational(k, where=f"knots[{i}]") for i, k in enumerate(knots))
     spline = BSplineCurve(_identity(n), knots)
     G = np.empty((n, n), dtype=object)
     G[...] = mpq(0)

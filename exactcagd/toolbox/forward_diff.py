@@ -25,9 +25,10 @@ from dataclasses import dataclass
 import numpy as np
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import DegreeError, DomainError, InputError
 from ..exact import bernstein as bz
-from ..exact.scalars import to_rational
+from ..exact.scalars import to_count, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from . import _exact as ex
 
@@ -95,8 +96,10 @@ def extend(values, count: int, degree: int | None = None) -> list:
 
     Fill the difference table with ``R_right = R + R_down`` (notes chapter 4).
     """
+    count = to_count(count, where="count")
+    limits.check("max_control_points", count, "extend: count")
     vals = _values(values)
-    n = len(vals) - 1 if degree is None else degree
+    n = len(vals) - 1 if degree is None else to_count(degree, where="degree", error=DegreeError)
     table = difference_table(vals)
     for row in table[n + 1:]:
         if any(x != 0 for x in row):
@@ -149,8 +152,8 @@ def forward_difference(poly, t0, delta, count: int, basis: str = "power") -> lis
     """
     f, n = _evaluator(poly, basis)
     t0, delta = to_rational(t0), to_rational(delta)
-    if count < 0:
-        raise InputError("count must be >= 0")
+    count = to_count(count, where="count")
+    limits.check("max_control_points", count, "forward_difference: count")
     start = [f(t0 + k * delta) for k in range(n + 1)]
     table = [start]
     while len(table[-1]) > 1:

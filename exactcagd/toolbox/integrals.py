@@ -27,9 +27,12 @@ from dataclasses import dataclass
 import numpy as np
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import DegreeError, DimensionError, DomainError, InputError
 from ..exact import bernstein as bz
 from ..exact.quadratic import sqrt_rational
+from ..exact.scalars import to_count
+from ..geometry._validate import instance_of
 from ..geometry.bezier_curve import BezierCurve
 
 __all__ = [
@@ -58,6 +61,7 @@ _KINDS = ("area", "sector", "Ix", "Iy", "volume")
 
 
 def _planar_poly(curve: BezierCurve, what: str):
+    instance_of(curve, BezierCurve, f"{what}: curve")
     if curve.dimension != 2:
         raise DimensionError(f"{what}: planar curves only")
     if curve.is_rational:
@@ -124,8 +128,9 @@ def d2_coefficients(n: int) -> np.ndarray:
     ``D_00 = -1/(2n)``, ``D_nn = 1/(2n)``, otherwise
     ``D_ij = (j - i) / ((i + j)(2n - i - j)) C(n,i) C(n,j) / C(2n, i+j)``.
     """
-    if n < 1:
+    if to_count(n, where="n", error=DegreeError) < 1:
         raise DegreeError("n >= 1")
+    limits.check("max_control_points", (n + 1) ** 2, f"d2_coefficients: (n + 1)^2 entries for n = {n}")
     D = np.empty((n + 1, n + 1), dtype=object)
     for i in range(n + 1):
         for j in range(n + 1):
@@ -140,8 +145,9 @@ def d2_coefficients(n: int) -> np.ndarray:
 
 def d3_coefficients(n: int) -> np.ndarray:
     """``D_ijk = C_{i,j,k-1} - C_{i,j,k}`` (20.12), corrected with ``1 / C(3n, i+j+k)``."""
-    if n < 1:
+    if to_count(n, where="n", error=DegreeError) < 1:
         raise DegreeError("n >= 1")
+    limits.check("max_control_points", (n + 1) ** 3, f"d3_coefficients: (n + 1)^3 entries for n = {n}")
     D = np.empty((n + 1, n + 1, n + 1), dtype=object)
     for i in range(n + 1):
         for j in range(n + 1):
@@ -251,8 +257,11 @@ def hybrid_curve(curve: BezierCurve, n: int, m: int | None = None) -> Hybrid:
 def max_bernstein(n: int, m: int):
     """``max_{[0,1]} B^n_m = C(n,m) (m/n)^m ((n-m)/n)^(n-m)`` (at ``t = m/n``); for ``m = n/2`` it is
     ``C(n, n/2) / 2^n`` as in (20.7)."""
+    n, m = to_count(n, where="n", error=DegreeError), to_count(m, where="m", error=DegreeError)
     if not (0 <= m <= n):
         raise DegreeError("need 0 <= m <= n")
+    if n == 0:  # B^0_0 = 1
+        return mpq(1)
     return bz.binomial(n, m) * mpq(m, n) ** m * mpq(n - m, n) ** (n - m)
 
 
