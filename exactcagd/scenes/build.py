@@ -85,8 +85,8 @@ def _bound(node, where: str, depth: int, count: list) -> tuple[int, int, int]:
     if isinstance(node, ast.Expression):
         return _bound(node.body, where, depth + 1, count)
     if isinstance(node, ast.Constant) and isinstance(node.value, int) and not isinstance(node.value, bool):
-        if _bits(node.value) > LIMITS["max_number_digits"] * 4:
-            raise SceneError(f"{where}: integer literal with more than {LIMITS['max_number_digits']} digits")
+        if _bits(node.value) > LIMITS["max_number_bits"]:
+            raise SceneError(f"{where}: integer literal of more than {LIMITS['max_number_bits']} bits")
         return 0, _bits(node.value), 0
     if isinstance(node, ast.Name) and node.id in ("x", "y"):
         return 1, 1, 0

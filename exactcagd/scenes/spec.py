@@ -61,9 +61,9 @@ LIMITS = {
     "max_grid": 400,
     "max_result_degree": 400,
     "max_samples": 20000,
-    # number strings and integers: digits of the mantissa, size of a decimal exponent
-    "max_number_digits": 1000,
-    "max_exponent": 1000,
+    # bits of one number's numerator or denominator (ints and number strings, "1e100000000"
+    # included), checked by exactcagd.limits before the number is built (~1200 digits)
+    "max_number_bits": 4000,
     # height expressions of grid generators (bounded on the syntax tree, before evaluation)
     "max_expression_chars": 500,
     "max_expression_nodes": 400,
@@ -207,40 +207,26 @@ def _check_name(name, where: str) -> None:
 
 
 def _check_number(x, where: str, policy: str):
+    """Exact value of a scene number; its size is bounded before it is built.
+
+    The bound is the package's ``max_input_bits`` check (:mod:`exactcagd.limits`), tightened to
+    ``LIMITS["max_number_bits"]`` for scenes: ``"1e100000000"`` is refused from its digits and
+    exponent, not expanded.
+    """
+    from .. import limits
+    from ..errors import LimitError
     from ..exact.scalars import to_rational
 
     if isinstance(x, bool) or not isinstance(x, (int, float, str)):
         raise SceneError(f"{where}: expected a number or 'p/q' string, got {type(x).__name__}")
-    if isinstance(x, int) and x.bit_length() > 4 * LIMITS["max_number_digits"]:
-        raise SceneError(f"{where}: integer with more than {LIMITS['max_number_digits']} digits")
-    if isinstance(x, str):
-        _check_number_size(x, where)
+    bound = min(b for b in (limits.get("max_input_bits"), LIMITS["max_number_bits"]) if b is not None)
     try:
-        return to_rational(x, policy=policy, where=where)
+        with limits.raised(max_input_bits=bound):
+            return to_rational(x, policy=policy, where=where)
+    except LimitError as exc:
+        raise SceneError(f"{str(exc).split('; raise it')[0]} (scenes: LIMITS['max_number_bits'])") from None
     except InputError as exc:
         raise SceneError(str(exc)) from None
-
-
-_EXPONENT = re.compile(r"[eE]\s*([-+]?\s*[0-9_]+)")
-
-
-def _check_number_size(text: str, where: str) -> None:
-    """Bound a number string before it is converted: ``"1e100000000"`` is refused, not expanded.
-
-    At most ``max_number_digits`` digits and a decimal exponent of at most ``max_exponent``
-    in absolute value (the exact value then has at most digits + exponent digits).
-    """
-    limit = LIMITS["max_number_digits"]
-    if len(text) > 2 * limit + 40:
-        raise SceneError(f"{where}: number string of {len(text)} characters (limit: {limit} digits)")
-    exponent = _EXPONENT.search(text)
-    mantissa = text[: exponent.start()] if exponent else text
-    if sum(c.isdigit() for c in mantissa) > limit:
-        raise SceneError(f"{where}: number with more than {limit} digits")
-    if exponent:
-        digits = exponent.group(1).replace("_", "").replace(" ", "")
-        if len(digits.lstrip("+-")) > 12 or abs(int(digits)) > LIMITS["max_exponent"]:
-            raise SceneError(f"{where}: exponent {exponent.group(1)} outside -{LIMITS['max_exponent']}..{LIMITS['max_exponent']}")
 
 
 def _check_positive(value, where: str, policy: str) -> None:
