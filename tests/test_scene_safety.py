@@ -123,6 +123,15 @@ def test_code_fingerprint_covers_every_module():
     assert time.perf_counter() - start < 2.0
 
 
+def test_library_versions_agree_with_importlib_metadata():
+    """The fingerprint's fast version scan (dist-info folder names) reads what importlib.metadata reads."""
+    from importlib import metadata
+
+    found = scene_cache._library_versions()
+    for name in ("gmpy2", "python-flint", "sympy", "numpy", "mpmath"):
+        assert found[name] == metadata.version(name), name
+
+
 # ----------------------------------------------------------------------------- never lose work
 def test_failing_product_does_not_lose_the_others(tmp_path, capsys, monkeypatch):
     """A product failing at run time (planted: the checks before work pass every real one we know)
