@@ -30,9 +30,9 @@ from dataclasses import dataclass, field
 import numpy as np
 from gmpy2 import mpq
 
-from ..errors import InputError
+from ..errors import DegreeError, InputError
 from ..exact.algebraic import RealAlgebraic, real_roots_bernstein
-from ..exact.bernstein import de_casteljau, derivative, elevate, subdivide
+from ..exact.bernstein import de_casteljau, derivative, elevate, from_power, subdivide
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve, BSplineSurface
@@ -412,24 +412,21 @@ def _inversion(family):
 
         from ..algebra.inversion import inversion_linear_algebra
 
-        while True:  # an improper (multiply traced) curve has no inversion formula: draw again
+        while True:  # an improper (multiply traced) or constant curve has no inversion formula: draw again
             curve = _planar(rng, family, degrees[0])
             try:
                 formula = inversion_linear_algebra(curve)
                 break
-            except InputError:
+            except (InputError, DegreeError):  # ImproperParametrizationError is an InputError
                 continue
-            except Exception as exc:  # noqa: BLE001 - ImproperParametrizationError / DegreeError
-                if "proper" in str(exc) or "constant" in str(exc):
-                    continue
-                raise
         params, pts = [], []
         for t in _params(rng, family, 3):
             x, y = curve.evaluate(t)
             value = formula(x, y)
             if value is None:  # a singular point: 0/0
                 continue
-            assert sympy.Rational(value) == sympy.Rational(int(t.numerator), int(t.denominator)), "inversion formula disagrees"
+            if sympy.Rational(value) != sympy.Rational(int(t.numerator), int(t.denominator)):  # pragma: no cover
+                raise ArithmeticError(f"inversion formula gives {value} at the point of t = {t}")
             params.append(t)
             pts.append([x, y])
         inp = curve_dict(curve)
@@ -446,8 +443,6 @@ def _perturbed(curve: BezierCurve, factor_roots: list, rng) -> BezierCurve:
     power = [mpq(1)]
     for r in factor_roots:
         power = [(power[k - 1] if k else 0) - r * (power[k] if k < len(power) else 0) for k in range(len(power) + 1)]
-    from ..exact.bernstein import from_power
-
     bump = from_power(np.array(power, dtype=object))
     degree = max(curve.degree, len(factor_roots))
     base = fam.elevated_to(curve.points_array(), degree)
