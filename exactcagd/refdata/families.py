@@ -24,6 +24,9 @@ Hard families (the names used in record ids):
     two roots / intersections closer than ``2^-40``.
 ``shared_algebraic``
     two curves on one algebraic curve (a sub-arc, possibly reversed).
+``nurbs``
+    (compose only) a B-spline / NURBS surface instead of a Bézier patch: the image
+    is cut where the domain curve crosses knot lines (algebraic parameters).
 
 >>> rng = record_rng("roots", "random", 0, 0)
 >>> isinstance(rational(rng), type(rational(rng)))
