@@ -52,6 +52,8 @@ _U = mpq(1, 2**53)
 
 
 def _values(values, what="values") -> list:
+    if isinstance(values, (str, bytes, bytearray)) or not hasattr(values, "__iter__"):
+        raise InputError(f"{what}: expected a sequence of numbers, got {type(values).__name__}")
     out = [to_rational(v, where=what) if v is not None else None for v in values]
     if not out:
         raise InputError(f"{what}: empty")
