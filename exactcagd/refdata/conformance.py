@@ -483,12 +483,15 @@ def _grade_roots(grader: _Grader, computed: dict, answer: dict) -> None:
 
 def _grade_intersections(grader: _Grader, computed: dict, answer: dict) -> None:
     if answer.get("overlaps"):
-        # the curves share an arc: a kernel should say so; count an answer without overlap as missed
+        # the curves share an arc: a kernel should say so (then its points are the arc's ends,
+        # not graded); an answer without the overlap counts as one missed solution
         said = bool(computed.get("overlap"))
         if not said:
             grader.wrong_count("overlap", "curves overlap; kernel did not report it", missed=1)
         return
-    exact = [((float.fromhex(h["t1"]["f64"]), float.fromhex(h["t2"]["f64"])), h["multiplicity"]) for h in answer["intersections"]]
+    # multiplicity is null for a point whose multiplicity the exact layer does not state: graded as simple
+    exact = [((float.fromhex(h["t1"]["f64"]), float.fromhex(h["t2"]["f64"])), h["multiplicity"] or 1)
+             for h in answer["intersections"]]
     _match_solutions(grader, "intersections", [tuple(map(float, p)) for p in computed["intersections"]], exact)
 
 
