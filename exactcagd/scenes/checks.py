@@ -69,8 +69,10 @@ def _bezier_segments(curve) -> list:
     return curve.to_bezier()
 
 
-def _check_inside(curve, box, where: str, name: str, what: str) -> None:
+def _check_inside(curve, box, where: str, name: str, what: str, skip: bool = False) -> None:
     """Exact check that the domain curve stays in ``box`` (hull first, then exact roots)."""
+    if skip:
+        return
     from ..composition.domain import check_inside
 
     for span, segment in _bezier_segments(curve):
@@ -110,9 +112,11 @@ def _check_degree(degree: int, where: str, what: str) -> None:
 def check_products(scene: Scene, objects: dict, cached=frozenset()) -> list[str]:
     """Check every product of ``scene`` against the built ``objects``; return warnings.
 
-    ``cached`` names products whose outputs are cached: they are checked all the same,
-    but get no cost estimate (nothing will be computed for them, and the estimate may
-    import the heavy machinery a cache hit should not load).
+    ``cached`` names products whose outputs are cached.  Their cheap checks (kinds,
+    dimensions, degrees) are made all the same; the exact domain check and the cost
+    estimates are not: nothing will be computed for them, an entry is stored only after
+    its product passed these checks with the same specs and code (both are in the key),
+    and they would load the machinery a cache hit should not (composition, sympy).
 
     Raises
     ------
@@ -128,13 +132,13 @@ def check_products(scene: Scene, objects: dict, cached=frozenset()) -> list[str]
             _planar(curve, f"{where}.curve", product["curve"], "a domain curve must be planar (points (u, v))")
             if surface.dimension < 2:
                 raise SceneError(f"{where}.surface: {product['surface']!r} lies in dimension {surface.dimension} (< 2)")
-            _check_inside(curve, _domain_box(surface), f"{where}.curve", product["curve"], "domain curve")
+            _check_inside(curve, _domain_box(surface), f"{where}.curve", product["curve"], "domain curve", skip=product["name"] in cached)
             if kind == "image_curve" or product.get("method") in ("cubic", "fit"):
                 _check_degree(result_degree(surface, curve), where, f"the exact image of {product['curve']} on {product['surface']}")
         elif kind == "patches" and "only_crossed_by" in product:
             curve = objects[product["only_crossed_by"]]
             _planar(curve, f"{where}.only_crossed_by", product["only_crossed_by"], "a domain curve must be planar (points (u, v))")
-            _check_inside(curve, _domain_box(objects[product["surface"]]), f"{where}.only_crossed_by", product["only_crossed_by"], "domain curve")
+            _check_inside(curve, _domain_box(objects[product["surface"]]), f"{where}.only_crossed_by", product["only_crossed_by"], "domain curve", skip=product["name"] in cached)
         elif kind == "implicit":
             curve = objects[product["curve"]]
             _implicit_ready(curve, f"{where}.curve", product["curve"])
@@ -161,6 +165,6 @@ def check_products(scene: Scene, objects: dict, cached=frozenset()) -> list[str]
             if not isinstance(lattice, BezierSurface):
                 raise SceneError(f"{where}.lattice: {product['lattice']!r} is a B-spline surface; an FFD lattice is one Bézier patch")
             _planar(curve, f"{where}.curve", product["curve"], "free-form deformation moves planar curves")
-            _check_inside(curve, ((0, 1), (0, 1)), f"{where}.curve", product["curve"], "curve to deform")
+            _check_inside(curve, ((0, 1), (0, 1)), f"{where}.curve", product["curve"], "curve to deform", skip=product["name"] in cached)
             _check_degree(result_degree(lattice, curve), where, f"the deformed curve {product['curve']}")
     return warnings
