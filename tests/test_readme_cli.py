@@ -57,3 +57,20 @@ def test_ci_runs_the_readme_test_command():
 def test_cli_reports_missing_scene(argv, capsys):
     assert main(argv) == 2
     assert "does not exist" in capsys.readouterr().err
+
+
+def test_readme_names_what_the_main_command_writes():
+    """The README's main command writes a PNG per picture product of hill_trim.toml, summary.json
+    and timings.json; the README names each of them (the run itself is tested in test_scenes_runner)."""
+    import tomllib
+
+    from exactcagd.scenes.spec import load_scene
+
+    readme = (ROOT / "README.md").read_text()
+    assert "exactcagd run examples/scenes/hill_trim.toml --out out" in readme
+    scene = load_scene(ROOT / "examples" / "scenes" / "hill_trim.toml")
+    pictures = {f"{p['name']}.png" for p in scene.products if p["kind"] == "picture"}
+    assert pictures == {"overview.png", "approximation.png"}
+    for name in sorted(pictures) + ["summary.json", "timings.json"]:
+        assert f"`{name}`" in readme, name
+    assert tomllib.loads((ROOT / "examples" / "scenes" / "hill_trim.toml").read_text())["scene"]["name"] == "hill_trim"
