@@ -125,9 +125,15 @@ def test_overlap():
     # t1 = (t2 + 1) / 2 on the right half
     assert c_ == 0 and sp.Rational(a_, d_) == sp.Rational(1, 2) and sp.Rational(b_, d_) == sp.Rational(1, 2)
     assert info.value.t2_intervals == [(0, 1)]
-    with pytest.raises(OverlapError) as info:
-        intersect(left, BezierCurve([[1, 1], [2, 1], [3, -3]]))
-    assert info.value.t2_intervals == []  # same parabola, disjoint pieces
+    # the shared arc with exact ends: t1 in [1/2, 1] is t2 in [0, 1] (t1 = (t2 + 1) / 2)
+    ((S, T),) = [(o.t1_interval, o.t2_interval) for o in info.value.overlaps]
+    assert (S[0], S[1], T[0], T[1]) == (sp.Rational(1, 2), 1, 0, 1) or [str(v) for v in (*S, *T)] == ["1/2", "1", "0", "1"]
+    # same parabola, pieces meeting only at left(1) = other(0): one point, not an error
+    other = BezierCurve([[1, 1], [2, 1], [3, -3]])
+    X = x - 1  # by hand: left is y = 2x - x^2 on x in [0, 1], other is the same on [1, 3]
+    assert sp.expand((2 * x - x**2).subs(x, 1 + 2 * X) - (1 - 4 * X**2)) == 0
+    (hit,) = intersect(left, other)
+    assert (hit.t1, hit.t2, hit.multiplicity) == (1, 0, None)
 
 
 def test_implicit_curves_19_3():

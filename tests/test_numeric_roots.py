@@ -395,3 +395,24 @@ def test_from_power_reference_is_consistent():
     c = planted([("1/4", 1), ("2/3", 2)])
     assert [(str(r), m) for r, m in flint_roots(list(c))] == [("1/4", 1), ("2/3", 2)]
     assert from_power(as_coefficients([0, 1])).tolist() == [0, 1]
+
+
+def test_marching_on_clustered_roots_hands_over_to_the_exact_route():
+    """prod_{i=1..10} (t - i/64) kept convex hull marching busy for over 600 s (issue 15);
+    with its work bound the march gives up (LimitError) and bernstein_roots answers
+    exactly: the ten planted roots, each in its own certified enclosure."""
+    import time
+
+    from exactcagd.errors import LimitError
+
+    poly = sympy.Poly(sympy.prod([T - sympy.Rational(i, 64) for i in range(1, 11)]), T)
+    power = np.array([mpq(int(c.p), int(c.q)) for c in reversed(poly.all_coeffs())], dtype=object)
+    coeffs = from_power(power)
+    t0 = time.process_time()
+    roots = bernstein_roots(coeffs, method="marching")
+    assert time.process_time() - t0 < 10
+    assert len(roots) == 10
+    for r, i in zip(roots, range(1, 11)):
+        assert r.certified and r.interval[0] <= i / 64 <= r.interval[1]
+    with pytest.raises(LimitError):
+        marching_roots(np.array([float(c) for c in coeffs]))

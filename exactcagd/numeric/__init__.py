@@ -6,7 +6,7 @@ Public entry points (stable):
 
 * :func:`evaluate`, :func:`evaluate_surface` — in ``numeric/evaluation.py``;
 * :func:`intersect` (curve/curve intersection, notes ch. 7) and :class:`Intersection`
-  — in ``numeric/intersection.py``;
+  — in ``numeric/intersection/`` (one module per route, one result type);
 * :func:`bernstein_roots`, :func:`line_roots` (notes ch. 9) — in ``numeric/roots.py``.
 
 No module is named like a function it exports, so the package attributes

@@ -47,7 +47,7 @@ from dataclasses import dataclass
 import numpy as np
 from gmpy2 import mpq
 
-from ..errors import DimensionError, InputError
+from ..errors import DimensionError, InputError, LimitError
 from ..exact.algebraic import real_roots_bernstein
 from ..exact.bernstein import as_coefficients, derivative
 from ..exact.scalars import to_rational
@@ -159,6 +159,10 @@ def _noise(y: np.ndarray) -> float:
 
 
 # ---------------------------------------------------------------- 9.1 convex hull marching
+#: hull steps per coefficient and per ``max_steps`` before marching gives up (LimitError)
+_MARCH_WORK = 1
+
+
 def marching_roots(y, tol: float = 1e-12, max_steps: int = 200) -> list[tuple[float, int]]:
     """Roots in [0, 1] of a float Bernstein polynomial by convex hull marching (notes 9.1).
 
@@ -180,10 +184,17 @@ def marching_roots(y, tol: float = 1e-12, max_steps: int = 200) -> list[tuple[fl
     Returns
     -------
     list of (t, multiplicity) with multiplicity 1 each (repeated roots repeat), sorted.
+
+    Raises
+    ------
+    LimitError
+        After ``max_steps * (n + 1)`` hull steps in all (clustered roots can make
+        the march restart without end); :func:`bernstein_roots` then answers exactly.
     """
     orig = np.asarray(y, dtype=float).copy()
     y = orig.copy()
     stall = 24
+    work = _MARCH_WORK * max_steps * len(orig)  # hull steps in all, over every restart
     roots: list[float] = []
     left = 0.0  # the current piece is f on [left, 1], deflated ``here`` times at ``left``
     here = 0
@@ -210,6 +221,10 @@ def marching_roots(y, tol: float = 1e-12, max_steps: int = 200) -> list[tuple[fl
         steps = 0
 
     while len(y) > 1:
+        work -= 1
+        if work < 0:
+            # clustered roots (prod (t - i/64)) kept the march restarting without end
+            raise LimitError(f"convex hull marching exceeded its work bound ({_MARCH_WORK * max_steps * len(orig)} steps)")
         n = len(y) - 1
         noise = err + _noise(y)
         if np.all(np.abs(y) <= noise):
@@ -705,7 +720,11 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
     if method == "exact":
         return sorted(ends + _exact_roots(c, tol), key=lambda r: r.t)
     finder = marching_roots if method == "marching" else isolating_roots
-    estimates = finder(y, tol)
+    try:
+        estimates = finder(y, tol)
+    except LimitError:
+        # the float method hit its work bound: the exact route answers (certified)
+        return sorted(ends + _exact_roots(c, tol), key=lambda r: r.t)
     if not certify:
         raw = [Root(t, (t, t), m, False, False) for t, m in estimates]
         return sorted(ends + raw, key=lambda r: r.t)

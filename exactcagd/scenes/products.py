@@ -64,7 +64,12 @@ def plan(product: dict, runner) -> tuple[list[str], list[str]]:
         n = objects[product["curve"]].degree
         return [f"implicit equation of {product['curve']} ({product.get('method', 'moving_lines')}, degree {n}, ~{implicit_seconds(n):.2g} s)"], []
     if kind == "intersections":
-        return [f"exact intersections of {product['curves'][0]} and {product['curves'][1]}"], []
+        from ..numeric.intersection import exact_cost
+
+        a, b = (objects[n] for n in product["curves"])
+        method = product.get("method", "auto")
+        cost = f"exact route for degrees {a.degree} x {b.degree}: ~{exact_cost(a.degree, b.degree):.2g} s"
+        return [f"intersections of {product['curves'][0]} and {product['curves'][1]} by {method} ({cost})"], []
     if kind == "ffd":
         return [f"exact free-form deformation of {product['curve']} by {product['lattice']}"], []
     return [], []  # pragma: no cover - validated kinds only
@@ -121,11 +126,13 @@ def compute(product: dict, runner, results: dict):
         poly = implicitize(objects[product["curve"]], method=product.get("method", "moving_lines"))
         return poly, {"summary": f"degree {poly.total_degree()} implicit equation"}
     if kind == "intersections":
-        from ..algebra import intersect
+        from ..numeric.intersection import intersect
 
         a, b = (objects[n] for n in product["curves"])
-        points = intersect(a, b)
-        return points, {"summary": f"{len(points)} intersection(s)"}
+        # default: clipping, certified, with the exact route on what it cannot certify
+        points = intersect(a, b, method=product.get("method", "auto"), progress=True)
+        arcs = "".join(f", shared arc t1 in [{o.t1_interval[0]}, {o.t1_interval[1]}]" for o in points.overlaps)
+        return points, {"summary": f"{len(points)} intersection(s){arcs}"}
     if kind == "approximation":
         return _compute_approximation(objects[product["surface"]], objects[product["curve"]], product)
     if kind == "ffd":

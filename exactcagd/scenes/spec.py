@@ -79,7 +79,7 @@ PRODUCT_KINDS = {
     "image_curve": ({"surface", "curve"}, {"reduce"}),
     "approximation": ({"surface", "curve", "tol"}, {"method"}),
     "implicit": ({"curve"}, {"method"}),
-    "intersections": ({"curves"}, set()),
+    "intersections": ({"curves"}, {"method"}),
     "patches": ({"surface"}, {"only_crossed_by"}),
     "ffd": ({"lattice", "curve"}, set()),
     "picture": ({"of"}, {"samples", "title"}),
@@ -426,4 +426,6 @@ def _check_product(spec, where: str, scene: Scene) -> dict:
         raise SceneError(f"{where}.title: expected a string of at most 200 characters")
     if kind == "implicit" and spec.get("method", "moving_lines") not in ("resultant", "bezier", "moving_lines"):
         raise SceneError(f"{where}.method: expected resultant, bezier or moving_lines")
+    if kind == "intersections" and spec.get("method", "auto") not in ("auto", "exact", "clipping", "subdivision", "interval"):
+        raise SceneError(f"{where}.method: expected auto, exact, clipping, subdivision or interval")
     return product
