@@ -45,20 +45,22 @@ class HeightPolynomial:
     def __init__(self, terms: dict):
         self.terms = {k: v for k, v in terms.items() if v != 0}
         self.degree = max((i + j for i, j in self.terms), default=0)
+        rows: dict = {}
+        for (i, j), c in self.terms.items():
+            rows.setdefault(i, {})[j] = c
+        # rows[i] = coefficients of y^j in the coefficient of x^i, dense, highest power first
+        self._rows = {i: [row.get(j, 0) for j in range(max(row), -1, -1)] for i, row in rows.items()}
 
     def __call__(self, x, y):
         """Exact value at rationals ``x, y`` (Horner in ``y`` for each power of ``x``)."""
         total = mpq(0)
         xpow = mpq(1)
-        by_x: dict = {}
-        for (i, j), c in self.terms.items():
-            by_x.setdefault(i, {})[j] = c
-        for i in range(max(by_x, default=-1) + 1):
-            row = by_x.get(i)
+        for i in range(max(self._rows, default=-1) + 1):
+            row = self._rows.get(i)
             if row:
                 inner = mpq(0)
-                for j in range(max(row), -1, -1):
-                    inner = inner * y + row.get(j, 0)
+                for c in row:
+                    inner = inner * y + c
                 total += xpow * inner
             xpow *= x
         return total
