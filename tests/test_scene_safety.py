@@ -181,7 +181,8 @@ def test_interrupt_leaves_old_outputs_complete(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(handlers, "compute", interrupted)
     capsys.readouterr()
     assert main(["run", str(path), "--out", str(out)]) == 130
-    assert "nothing was written to" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "nothing was written to" in err and "1 product(s) finished before the interrupt (image) are cached" in err
     assert outputs(out / "small") == before
     assert not [p for p in out.iterdir() if p.name.startswith(".small")], "staging folder left behind"
 

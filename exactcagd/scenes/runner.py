@@ -86,6 +86,7 @@ class Runner:
         self.objects = self._build_objects()
         self._specs = {p["name"]: p for p in scene.products}
         self._keys: dict = {}
+        self.stored: list = []  # products computed and cached by the current run
         self.warnings = check_products(scene, self.objects, cached={p["name"] for p in scene.products if self._is_cached(p)})
         self.published = False
 
@@ -141,6 +142,7 @@ class Runner:
         """
         self.check_outputs()
         plan = self.plan()
+        self.stored = []
         self._results: dict = {}
         self._rendered: dict = {}
         self._failed: dict = {}
@@ -191,6 +193,7 @@ class Runner:
         self._result(name)
         files, info, extra = self._rendered[name]
         self.cache.store(item.key, files, {"summary": info.get("summary", "")})
+        self.stored.append(name)
         return files, info, "computed", extra
 
     def _result(self, name: str):
@@ -269,11 +272,13 @@ def cmd_run(args) -> int:
         if runner.published:
             print(f"interrupted after the outputs were complete: {runner.scene_dir}/ is written", file=sys.stderr)
         else:
-            print(
-                f"interrupted: nothing was written to {runner.scene_dir}/ (an older output there is unchanged); "
-                f"products finished before the interrupt are cached in {runner.cache_dir}/ and will be reused",
-                file=sys.stderr,
+            done = runner.stored
+            kept = (
+                f"{len(done)} product(s) finished before the interrupt ({', '.join(done)}) are cached in {runner.cache_dir}/ and will be reused"
+                if done
+                else "no product had finished"
             )
+            print(f"interrupted: nothing was written to {runner.scene_dir}/ (an older output there is unchanged); {kept}", file=sys.stderr)
         return 130
     print(f"\n{'product':<24} {'kind':<14} {'status':<9} {'time':>8}  summary")
     for item in runner.scene.products:
