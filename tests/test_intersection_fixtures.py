@@ -246,3 +246,38 @@ def test_bad_options_raise_input_error(kw):
     p, q = _parabola_and_line()
     with pytest.raises(InputError):
         intersect(p, q, **kw)
+
+
+# ------------------------------------------------------------------ speed and progress
+def _random_pair(n, seed):
+    import random
+
+    rng = random.Random(seed)
+    return tuple(BezierCurve([[rng.randint(-100, 100), rng.randint(-100, 100)] for _ in range(n + 1)]) for _ in range(2))
+
+
+def test_exact_route_degree_10_is_fast_and_agrees_with_clipping():
+    """Issue 15 goal: two degree-10 curves under 1 s (CPU; generous bound for a loaded
+    machine).  Reference for the count: sympy's resultant in s has exactly as many real
+    roots in [0, 1] as there are intersections (random pair: all simple, none shared)."""
+    a, b = _random_pair(10, 7)
+    t0 = time.process_time()
+    exact = intersect(a, b, method="exact")
+    assert time.process_time() - t0 < 3
+    X1, Y1, _ = sym(a, s)
+    X2, Y2, _ = sym(b, t)
+    R = sympy.Poly(sympy.resultant(X1 - X2, Y1 - Y2, t), s)
+    want = [r for r in R.real_roots() if 0 <= r <= 1]
+    assert len(exact) == len(want) == len(intersect(a, b, method="clipping"))
+    for x, r in zip(exact, sorted(want)):
+        assert x.certified and x.multiplicity == 1 and inside(x, r, x.exact[1].to_sympy())
+
+
+def test_progress_reports_stages_to_a_callback():
+    a, b = FIXTURES["tangent order 3"]
+    seen = []
+    intersect(a, b, method="exact", progress=lambda stage, done, total: seen.append(stage))
+    assert seen[0].startswith("implicit") and seen[-1] == "done"
+    quiet = []
+    intersect(a, b, method="exact", progress=None)  # the library is quiet by default
+    assert quiet == []
