@@ -6,26 +6,52 @@ float evaluators with certified error bounds sit on top in :mod:`exactcagd.numer
 >>> from exactcagd import BezierCurve
 >>> BezierCurve([[0, 0], [1, 1]]).evaluate("1/3")
 (mpq(1,3), mpq(1,3))
+
+The public names below are imported on first use (PEP 562), so ``import exactcagd``
+and ``exactcagd --version`` do not load sympy, numpy and python-flint.
 """
 
-__version__ = "0.1.0"
+from __future__ import annotations
 
-from . import errors  # noqa: E402
-from .exact.scalars import float_policy, set_float_policy, to_rational  # noqa: E402
-from .geometry.bezier_curve import BezierCurve  # noqa: E402
-from .geometry.bezier_surface import BezierSurface  # noqa: E402
-from .geometry.bspline import BSplineCurve, BSplineSurface  # noqa: E402
-from .composition import compose  # noqa: E402
+import importlib
+from typing import TYPE_CHECKING, Any
 
-__all__ = [
-    "__version__",
-    "errors",
-    "to_rational",
-    "float_policy",
-    "set_float_policy",
-    "BezierCurve",
-    "BezierSurface",
-    "BSplineCurve",
-    "BSplineSurface",
-    "compose",
-]
+from ._version import __version__
+
+if TYPE_CHECKING:  # what type checkers and IDEs see; at run time see __getattr__
+    from . import errors
+    from .composition import compose
+    from .exact.scalars import float_policy, set_float_policy, to_rational
+    from .geometry.bezier_curve import BezierCurve
+    from .geometry.bezier_surface import BezierSurface
+    from .geometry.bspline import BSplineCurve, BSplineSurface
+
+#: public name -> module that defines it (relative to this package)
+_LAZY = {
+    "errors": ".errors",
+    "to_rational": ".exact.scalars",
+    "float_policy": ".exact.scalars",
+    "set_float_policy": ".exact.scalars",
+    "BezierCurve": ".geometry.bezier_curve",
+    "BezierSurface": ".geometry.bezier_surface",
+    "BSplineCurve": ".geometry.bspline",
+    "BSplineSurface": ".geometry.bspline",
+    "compose": ".composition",
+}
+
+__all__ = ["__version__", *_LAZY]
+
+
+def __getattr__(name: str) -> Any:
+    try:
+        module_name = _LAZY[name]
+    except KeyError:
+        raise AttributeError(f"module 'exactcagd' has no attribute {name!r}") from None
+    module = importlib.import_module(module_name, __name__)
+    value = module if name == "errors" else getattr(module, name)
+    globals()[name] = value  # later lookups skip __getattr__
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))

@@ -118,7 +118,10 @@ def test_json_schema_agrees_with_the_validator():
     """The published JSON Schema accepts every shipped scene and rejects the hostile ones the
     validator rejects for shape reasons (unknown keys, bad names, bad kinds)."""
     jsonschema = pytest.importorskip("jsonschema")
-    import tomllib
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10: tomllib is the standard library's copy of tomli
+        import tomli as tomllib
     from pathlib import Path
 
     import exactcagd.scenes as pkg

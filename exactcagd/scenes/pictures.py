@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import NotSupportedError
 from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
@@ -25,7 +26,12 @@ __all__ = ["draw", "close"]
 
 
 def _figure(error_panel: bool = False):
-    import matplotlib
+    try:
+        import matplotlib
+    except ModuleNotFoundError:
+        raise NotSupportedError(
+            "pictures need matplotlib, an optional extra: pip install 'exactcagd[plots]'"
+        ) from None
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
