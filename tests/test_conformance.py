@@ -330,3 +330,23 @@ def test_bad_output_folder(suite, tmp_path, capsys):
         assert main(["conformance", "--kernel", "geomdl", "--suite", str(suite), "--out", out]) == 2
         assert "--out" in capsys.readouterr().err
     assert target.read_text() == "x"
+
+
+def test_rounded_data_answer_is_the_exact_answer_for_the_float_data(suite):
+    """The floor's reference: exact values of the *rounded* data, checked with sympy's Bernstein sum."""
+    import sympy
+
+    record = next(r for r in conf.open_suite(suite).records("curve_eval") if "weights" in r["input"])
+    inp = record["input"]
+    pts = [[sympy.Rational(Fraction(_hex(x))) for x in p] for p in inp["control_points_f64"]]
+    w = [sympy.Rational(Fraction(_hex(x))) for x in inp["weights_f64"]]
+    n = len(pts) - 1
+    got = conf.rounded_data_answer(record)["values"]
+    for k, t in enumerate(inp["params_f64"]):
+        t = sympy.Rational(Fraction(_hex(t)))
+        basis = [sympy.binomial(n, i) * t**i * (1 - t) ** (n - i) for i in range(n + 1)]
+        den = sum(w[i] * basis[i] for i in range(n + 1))
+        for d in range(len(pts[0])):
+            value = sum(w[i] * pts[i][d] * basis[i] for i in range(n + 1)) / den
+            assert sympy.Rational(Fraction(int(got[k][d].numerator), int(got[k][d].denominator))) == value
+    assert conf.rounded_data_answer(next(conf.open_suite(suite).records("roots"))) is None

@@ -27,7 +27,9 @@ What is measured, per kind (and per family):
   error in units of the last place of the largest exact value of that field in the
   record (a coordinate that is exactly 0 and computed as 1e-17 is 4e18 ulps off but a
   fraction of an ulp of the curve's size, which is what a float algorithm can promise:
-  judge kernels by scaled ulps, read raw ulps as "how many bits are right");
+  judge kernels by scaled ulps, read raw ulps as "how many bits are right"); for the
+  worst records of the evaluation kinds the report adds the *data-rounding floor*, the
+  error the float64 rounding of the data alone causes (:func:`rounded_data_answer`);
 * ``compose``: kernels that approximate a curve on a surface report their own error
   estimate; the true error at the sampled parameters is measured exactly (float sample
   points against ``S(K(t))`` in rational arithmetic) and ``under-estimates`` counts
@@ -73,6 +75,8 @@ __all__ = [
     "report_markdown",
     "plot_errors",
     "grade_record",
+    "rounded_data_answer",
+    "scaled_ulps",
     "cmd_conformance",
 ]
 
@@ -270,6 +274,8 @@ class KindResult:
     fields: dict = field(default_factory=dict)  # field -> (Stats ulps, Stats scaled)
     families: dict = field(default_factory=dict)  # family -> counters
     worst: list = field(default_factory=list)  # (scaled, ulps, id, field, computed, expected)
+    worst_records: dict = field(default_factory=dict)  # id -> record, for the records in ``worst``
+    floors: dict = field(default_factory=dict)  # (id, field) -> data-rounding floor in scaled ulps
     seconds: float = 0.0
 
     def family(self, name: str) -> dict:
@@ -299,7 +305,8 @@ class KindResult:
             "families": self.families,
             "worst": [
                 {"id": rid, "ratio": sc, "true_error": c, "claimed_error": e} if self.kind == "compose" else
-                {"id": rid, "field": name, "scaled_ulps": sc, "ulps": ul, "computed": float.hex(c), "expected": float.hex(e)}
+                {"id": rid, "field": name, "scaled_ulps": sc, "ulps": ul, "computed": float.hex(c), "expected": float.hex(e),
+                 "floor_scaled_ulps": self.floors.get((rid, name))}
                 for sc, ul, rid, name, c, e in self.worst
             ],
             "seconds": round(self.seconds, 3),
@@ -367,6 +374,10 @@ class _Grader:
         worst.append(entry)
         worst.sort(key=lambda w: (w[0], w[1]), reverse=True)
         del worst[WORST_KEPT:]
+        self.result.worst_records[entry[2]] = self.record
+        kept = {w[2] for w in worst}
+        for rid in [r for r in self.result.worst_records if r not in kept]:
+            del self.result.worst_records[rid]
 
     def wrong_count(self, name: str, detail: str, missed: int = 0, extra: int = 0) -> None:
         self.result.missed += missed
@@ -530,6 +541,65 @@ def _grade_compose(grader: _Grader, computed: dict, record: dict) -> None:
         grader.wrong_count("claimed_error", f"true error {true_error:.3e} > claimed {claimed:.3e} (x{ratio:.3g})")
 
 
+def _rounded(values):
+    """The float64 companions of a field as exact rationals (nested lists)."""
+    if isinstance(values, list):
+        return [_rounded(v) for v in values]
+    return mpq(float.fromhex(values))
+
+
+def rounded_data_answer(record: dict) -> dict | None:
+    """The exact answer for the record's data *rounded to float64* (evaluation kinds only).
+
+    What a kernel receives is the rounded data; the exact answer for it, compared with the
+    correctly rounded answer for the exact data, is the error the rounding alone causes
+    (the *floor*): a kernel error far above its floor is the kernel's.  ``None`` for the
+    kinds this is not computed for.
+    """
+    from ..geometry.bezier_curve import BezierCurve
+    from ..geometry.bezier_surface import BezierSurface
+    from ..geometry.bspline import BSplineCurve, BSplineSurface
+    from .kinds import rational_jet, surface_point_normal
+
+    inp, kind = record["input"], record["kind"]
+    weights = _rounded(inp["weights_f64"]) if "weights" in inp else None
+    params = _rounded(inp["params_f64"]) if "params_f64" in inp else None
+    if kind == "curve_eval":
+        curve = BezierCurve(_rounded(inp["control_points_f64"]), weights)
+        jets = [rational_jet(curve.homogeneous(), t) for t in params]
+        return {"values": [j[0] for j in jets], "first_derivatives": [j[1] for j in jets],
+                "second_derivatives": [j[2] for j in jets]}
+    if kind == "surface_eval":
+        surface = BezierSurface(_rounded(inp["control_points_f64"]), weights)
+        pairs = [surface_point_normal(surface, u, v) for u, v in params]
+        return {"values": [p for p, _ in pairs], "normals": [n for _, n in pairs]}
+    if kind == "bspline_eval" and inp["object"] == "curve":
+        curve = BSplineCurve(_rounded(inp["control_points_f64"]), _rounded(inp["knots_f64"]), weights)
+        return {"values": [list(curve.evaluate(t)) for t in params]}
+    if kind == "bspline_eval":
+        surface = BSplineSurface(_rounded(inp["control_points_f64"]), _rounded(inp["knots_u_f64"]),
+                                 _rounded(inp["knots_v_f64"]), weights)
+        return {"values": [list(surface.evaluate(u, v)) for u, v in params]}
+    return None
+
+
+def _add_floors(result: KindResult) -> None:
+    """Data-rounding floor (scaled ulps) of each listed worst record, where computable."""
+    from .records import f64_float
+
+    for _, _, rid, name, _, _ in result.worst:
+        record = result.worst_records.get(rid)
+        answer = rounded_data_answer(record) if record is not None else None
+        if answer is None or name not in answer:
+            continue
+        expected = np.array(_hex_array(record["answer"][name + "_f64"]), dtype=float).reshape(-1)
+        got = np.array([f64_float(x) for x in np.array(answer[name], dtype=object).reshape(-1)])
+        finite = np.abs(expected[np.isfinite(expected)])
+        scale = float(finite.max()) if finite.size else 0.0
+        pairs = [(a, b) for a, b in zip(got.tolist(), expected.tolist()) if math.isfinite(b)]
+        result.floors[(rid, name)] = max((scaled_ulps(a, b, scale) for a, b in pairs), default=0.0)
+
+
 #: Kinds whose answers are sets of solutions (matched, not compared by position).
 SPECIAL = {"roots": _grade_roots, "intersect": _grade_intersections}
 
@@ -622,6 +692,7 @@ def run_conformance(adapter, suite: Suite, kinds=None, limit: int | None = None,
             grade_record(result, adapter, record, timeout)
             if progress is not None:
                 progress(kind, n + 1, total)
+        _add_floors(result)
         result.seconds = time.perf_counter() - start
         results[kind] = result
     return {
@@ -705,7 +776,9 @@ def report_markdown(report: dict) -> str:
         elif r["worst"]:
             lines += ["", "Worst records (reproduce with the record id):", ""]
             lines += [f"- `{w['id']}` {w['field']}: {_fmt(w['scaled_ulps'])} scaled ulps, {_fmt(w['ulps'])} ulps "
-                      f"(got {float.fromhex(w['computed']):.17g}, exact rounds to {float.fromhex(w['expected']):.17g})" for w in r["worst"]]
+                      f"(got {float.fromhex(w['computed']):.17g}, exact rounds to {float.fromhex(w['expected']):.17g})"
+                      + (f"; data-rounding floor {_fmt(w['floor_scaled_ulps'])} scaled ulps" if w.get("floor_scaled_ulps") is not None else "")
+                      for w in r["worst"]]
         if r["wrong_count_records"]:
             lines += ["", f"Wrong counts ({r['wrong_count_total']} records; first {len(r['wrong_count_records'])}):", ""]
             lines += [f"- `{w['id']}` {w['field']}: {w['detail']}" for w in r["wrong_count_records"]]
