@@ -56,6 +56,10 @@ def implicit_seconds(degree: int) -> float:
     return 1.7 * 1.8 ** (degree - 16)
 
 
+#: estimated seconds of exact intersection (numeric.intersection.exact_cost) above which plan warns
+WARN_EXACT_SECONDS = 10
+
+
 def _domain_box(surface):
     if isinstance(surface, BezierSurface):
         return ((0, 1), (0, 1))
@@ -155,11 +159,16 @@ def check_products(scene: Scene, objects: dict, cached=frozenset()) -> list[str]
                 _implicit_ready(curve, f"{where}.curves[{k}]", name)
             degree = a.degree * b.degree
             _check_degree(degree, where, "the intersection polynomial")
-            if degree > WARN_INTERSECTION_DEGREE and product["name"] not in cached:
-                warnings.append(
-                    f"{where} ({product['name']}): intersection polynomial of degree {degree} "
-                    f"(= {a.degree} x {b.degree}) with exact root isolation; expect minutes above degree {WARN_INTERSECTION_DEGREE}"
-                )
+            if product["name"] not in cached:
+                from ..numeric.intersection import exact_cost
+
+                cost = exact_cost(a.degree, b.degree)
+                if cost > WARN_EXACT_SECONDS or degree > WARN_INTERSECTION_DEGREE:
+                    warnings.append(
+                        f"{where} ({product['name']}): intersection polynomial of degree {degree} "
+                        f"(= {a.degree} x {b.degree}); the exact route (method 'exact', or the fallback of "
+                        f"'{product.get('method', 'auto')}' on tangencies) takes ~{cost:.0f} s"
+                    )
         elif kind == "ffd":
             lattice, curve = objects[product["lattice"]], objects[product["curve"]]
             if not isinstance(lattice, BezierSurface):
