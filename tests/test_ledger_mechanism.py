@@ -43,7 +43,7 @@ def test_erratum_runs_both_forms_and_stores_the_counterexample():
     row = _row(erratum("x^2 + 1", "x^2 + 2x + 1", "expand", printed_form=x**2 + 1, corrected_form=x**2 + 2 * x + 1,
                        check=same_expr(sympy.expand((x + 1) ** 2))))
     assert row.status == "erratum"
-    assert row.outcome.counterexample == "at x = 1: form = 2, reference = 4"
+    assert row.outcome.counterexample == "at x = 1/3: form = 10/9, reference = 16/9"
 
 
 def test_erratum_whose_printed_form_passes_is_failed():
@@ -113,7 +113,7 @@ def test_run_records_version_commit_dependencies_date_machine(tmp_path, monkeypa
         assert run["git_commit"] and len(run["git_commit"].split()[0]) == 40
     md = (tmp_path / "LEDGER.md").read_text()
     assert f"exactcagd {exactcagd.__version__}" in md and "CPUs" in md
-    assert "counterexample (printed): at x = 1: form = 1, reference = 2" in md
+    assert "counterexample (printed): at x = 1/3: form = 1/9, reference = 2/3" in md
     assert "compared: printed 1 + 1 = 2 vs integer addition" in md
     page = (tmp_path / "html" / "yang.html").read_text()
     assert "<math" in page and "counterexample" in page and "def wrong" in page and "#fbd9d3" in page

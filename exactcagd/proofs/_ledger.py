@@ -37,7 +37,7 @@ Example
 ...                    check=same_expr(sympy.expand((x + 1) * (x + 1))))
 >>> row = run_claim(Claim("sederberg", "2.3", "(x)", "a square", False, _square))
 >>> row.status, row.outcome.counterexample
-('erratum', 'at x = 1: form = 2, reference = 4')
+('erratum', 'at x = 1/3: form = 10/9, reference = 16/9')
 """
 
 from __future__ import annotations

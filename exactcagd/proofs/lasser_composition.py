@@ -20,6 +20,7 @@ from exactcagd import BezierCurve, BezierSurface
 from exactcagd.composition import compose
 from exactcagd.composition.lasser import compose_homogeneous_lasser, lasser_constant, polar_value, trace_theorem1
 from exactcagd.exact import bernstein as bz
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, not_checkable, reconstructed, verified, verified_range
 
 T, U, V = sympy.symbols("t u v")
@@ -195,10 +196,14 @@ def polar_recursion():
         for x in us:
             v_first = (1 - x) * v_first[:-1] + x * v_first[1:]
         assert sympy.expand(v_first[0, 0, 0] - value) == 0
+    def u_step_index(label):
+        # the alpha-th u step must use the alpha-th u argument: label(alpha) == alpha for alpha = 1..l
+        return None if all(label(al) == al for al in (1, 2, 3)) else f"the u step uses argument {label(2)} at step 2 (the same index every step)"
     return reconstructed(
         "u-step uses u_{I_u^u}; v-step description lists v_{I_1^u}, ..., v_{I_beta^v}",
         "u-step uses u_{I^u_alpha} (the alpha-th u index), v-step v_{I^v_beta}; arguments v_{I^v_1}, ..., v_{I^v_beta}",
         "the recursion (l de Casteljau steps in u, m in v) gives a symmetric, multi-affine form whose diagonal is F(u, v); u and v steps commute (symbolic, (l, m) <= (3, 1)/(2, 2))",
+        printed_form=lambda al: 'u', corrected_form=lambda al: al, check=L.predicate(u_step_index), reference='text',
     )
 
 
@@ -257,11 +262,16 @@ def remark3():
         surface, k = random_instance(rng, 2, 2, 2, rs, rc)
         image = compose(surface, k)
         assert image.is_rational and image.reduce().is_rational
+    def covers_the_four_cases(cases):
+        need = {("poly", "poly"), ("poly", "rat"), ("rat", "poly")}
+        missing = need - set(cases)
+        return None if not missing else f"the list misses (K, F) = {sorted(missing)}; it names {cases}"
     return erratum(
         "Special cases K(t), F(u,v) both polynomial, K polynomial and F rational, and K polynomial and F rational",
         "... K(t) polynomial and F rational, and K(t) rational and F polynomial",
         "the list repeats one case; with beta = omega = 1 Theorem 2 reduces to Theorem 1 (symbolic, (l, m, N) = (2, 1, 2)); "
         "both mixed cases give rational curves whose reduced weight is not constant (random exact instances)",
+        printed_form=[('poly', 'poly'), ('poly', 'rat'), ('poly', 'rat')], corrected_form=[('poly', 'poly'), ('poly', 'rat'), ('rat', 'poly')], check=L.predicate(covers_the_four_cases), reference='text',
     )
 
 

@@ -15,6 +15,8 @@ from exactcagd.composition import compose
 from exactcagd.composition.isoparametric import statement1_points
 from exactcagd.composition.lasser import compose_homogeneous_lasser, lasser_constant, multi_indices, polar_value
 from exactcagd.exact import bernstein as bz
+from exactcagd.proofs import _ledger as L
+from exactcagd.proofs._reference import agrees_with_substitution, composition_degree
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 from exactcagd.proofs.lasser_composition import random_instance
 
@@ -48,7 +50,12 @@ def eq8():
     for l, m in itertools.product(range(5), range(5)):
         for R in range(l + m + 1):
             assert all(lasser_constant(l, m, 1, iu, iv) == Fr(1, bz.binomial(l + m, R)) for iu, iv in multi_indices(l, m, 1, R))
-    return reconstructed("(5) becomes (8)", "(7) becomes (8)", "the constants are (7), not the curve (5); C(1, 0) = C(1, 1) = 1 gives 1/C(l+m, R); checked for l, m <= 4")
+    def constants_become_8(tag):
+        # (7) is the constant C^{l,m}_R(N, I); (5) is the curve F(K(t)); only a constant can 'become' 1/C(l+m, R)
+        return None if tag == "(7)" else f"{tag} is the composed curve, not the constants that equal 1/C(l+m, R) for N = 1"
+    return reconstructed("(5) becomes (8)", "(7) becomes (8)", "the constants are (7), not the curve (5); C(1, 0) = C(1, 1) = 1 gives 1/C(l+m, R); checked for l, m <= 4",
+        printed_form='(5)', corrected_form='(7)', check=L.predicate(constants_become_8), reference='text',
+    )
 
 
 @claim(doc="lasser", section="III", ref="(4) simplifies to", statement="(4) simplifies to B_R = 1/C(l+m,R) sum_{|I|=R} F(u_I^l, v_I^m)")
@@ -58,7 +65,11 @@ def eq_after_8():
     for R in range(5):
         direct = sum((polar_value(net, [curve[i, 0] for i in iu], [curve[i, 1] for i in iv]) for iu, iv in multi_indices(2, 2, 1, R)), net[0, 0] * 0) / bz.binomial(4, R)
         assert all(sympy.expand(x - y) == 0 for x, y in zip(general[R], direct))
-    return reconstructed("(4) simplifies to", "(6) simplifies to", "it is the Bézier-point formula (6) that simplifies; checked symbolically for l = m = 2")
+    def bezier_point_formula(tag):
+        return None if tag == "(6)" else f"{tag} is not the Bezier-point formula whose N = 1 case is B_R = 1/C(l+m,R) sum F(u_I, v_I)"
+    return reconstructed("(4) simplifies to", "(6) simplifies to", "it is the Bézier-point formula (6) that simplifies; checked symbolically for l = m = 2",
+        printed_form='(4)', corrected_form='(6)', check=L.predicate(bezier_point_formula), reference='text',
+    )
 
 
 @claim(doc="lasser", section="III", ref="Statement 1 proof: sum equivalence", statement="sum_{|I|=R} F(u_I^l, v_I^m) = sum_a C(l,a) C(n,R-a) F_a for v0 = v1 = v*")
@@ -69,10 +80,22 @@ def counting_identity():
             for iu, iv in multi_indices(l, m, 1, R):
                 counts[sum(iu)] = counts.get(sum(iu), 0) + 1
             assert all(counts.get(a, 0) == bz.binomial(l, a) * bz.binomial(m, R - a) for a in range(l + 1))
+    def counts(second_degree):
+        # number of multi-indices with |I^u| = a, |I^v| = R - a, against C(l, a) C(second_degree(l, m), R - a)
+        for l_, m_ in itertools.product(range(1, 4), range(1, 4)):
+            for R in range(l_ + m_ + 1):
+                c = {}
+                for iu, iv in multi_indices(l_, m_, 1, R):
+                    c[sum(iu)] = c.get(sum(iu), 0) + 1
+                for a in range(l_ + 1):
+                    if c.get(a, 0) != bz.binomial(l_, a) * bz.binomial(second_degree(l_, m_), R - a):
+                        return f"l = {l_}, m = {m_}, R = {R}, a = {a}: {c.get(a, 0)} multi-indices"
+        return None
     return reconstructed(
         "sum_a binom(l, a) binom(n, R - a) F_a",
         "sum_a binom(l, a) binom(m, R - a) F_a  (n is undefined here; the v-indices number m)",
         "counting the multi-indices with |I^u| = a, |I^v| = R - a for l, m <= 4",
+        printed_form=lambda l_, m_: l_ + m_, corrected_form=lambda l_, m_: m_, check=L.predicate(counts), reference='enumeration',
     )
 
 
@@ -118,10 +141,21 @@ def eq12():
         assert sympy.expand(sum(B[R] * bern(l + m, R) for R in range(l + m + 1)) - curve) == 0
         printed0 = sum((F[a] for a in range(1, min(0, l) + 1)), sympy.Integer(0))  # R = 0 with a > 0: an empty sum
         assert sympy.expand(printed0 - B[0]) != 0
+    def is_degree_elevation(lower):
+        for l_, m_ in [(1, 1), (2, 1), (2, 3), (3, 2)]:
+            F_ = [sympy.Symbol(f"F{a}") for a in range(l_ + 1)]
+            B_ = [sum((sympy.Rational(bz.binomial(l_, a) * bz.binomial(m_, R - a), bz.binomial(l_ + m_, R)) * F_[a]
+                       for a in range(lower(R, m_), min(R, l_) + 1)), sympy.Integer(0)) for R in range(l_ + m_ + 1)]
+            diff = sympy.expand(sum(B_[R] * sympy.binomial(l_ + m_, R) * t**R * (1 - t) ** (l_ + m_ - R) for R in range(l_ + m_ + 1))
+                                - sum(F_[a] * sympy.binomial(l_, a) * t**a * (1 - t) ** (l_ - a) for a in range(l_ + 1)))
+            if diff != 0:
+                return f"(l, m) = ({l_}, {m_}): the sum is not the degree elevation of F (B_0 = {B_[0]})"
+        return None
     return reconstructed(
         "sum from a = R - m, a > 0",
         "sum from a = max(0, R - m) to min(R, l)  (a >= 0, as printed in (17))",
         "with a > 0 the sum for R = 0 is empty (B_0 = 0 != F_0); with a >= 0 it is the degree elevation l -> l + m (symbolic)",
+        printed_form=lambda R, m_: max(1, R - m_), corrected_form=lambda R, m_: max(0, R - m_), check=L.predicate(is_degree_elevation),
     )
 
 
@@ -142,9 +176,13 @@ def statement1():
             short, general = compose(surface, curve), compose(surface, curve, shortcut=False)
             assert general == short.elevate(general.degree - short.degree)
             assert short.degree == N * (l if direction == "v" else m)
+            if l + m + N <= 4:
+                assert agrees_with_substitution(surface, curve, short)  # sympy F(K(t)) at exact parameters
     return verified_range(
         "l, m <= 3, 1 <= N <= 3 (random exact nets, u- and v-lines)",
         "the Theorem-1 net equals the iso curve (degree l N or m N) elevated by N m (or N l) exactly; the paper's N = 1 case is included",
+        compared="Statement 1 (degree-raised iso curve) vs the Theorem-1 net; the short form against sympy's F(K(t)) for l + m + N <= 4",
+        reference="sympy",
     )
 
 
@@ -154,7 +192,13 @@ def section4_index():
     curve = BezierCurve([["1/3", "1/5"], ["1/3", "4/5"]])
     iso = surface.iso_u("1/3").reparametrize("1/5", "4/5")
     assert compose(surface, curve) == iso
-    return reconstructed("where |I^u| = R", "where |I^v| = R", "for a v-parameter line the R-th point uses R of the m v-arguments equal to v_1; exact check on a (2, 3) patch")
+    def v_line_index(which):
+        # for a v-parameter line (u fixed) the R-th Bezier point takes R of the m v-arguments equal to v_1
+        pts = [surface.polar_value if False else None]
+        return None if which == "I^v" else "for u0 = u1 = u* all u arguments are u*: |I^u| is always 0, R counts v arguments"
+    return reconstructed("where |I^u| = R", "where |I^v| = R", "for a v-parameter line the R-th point uses R of the m v-arguments equal to v_1; exact check on a (2, 3) patch",
+        printed_form='I^u', corrected_form='I^v', check=L.predicate(v_line_index), reference='text',
+    )
 
 
 @claim(doc="lasser", section="IV", ref="section IV strategy", statement="otherwise (not N = 1 isoparametric) F(K(t)) is of degree N(l+m)")
@@ -163,16 +207,17 @@ def section4_degree():
     iso2 = BezierCurve([["1/10", "1/2"], ["9/10", "1/2"], ["1/5", "1/2"]])  # N = 2, isoparametric
     mixed = BezierCurve([["1/10", "1/10"], ["1/2", "9/10"], ["9/10", "1/10"]])  # u linear, v quadratic; not degree raised
     assert mixed.true_degree() == 2 and iso2.true_degree() == 2
-    a = compose(surface, iso2, shortcut=False)
-    b = compose(surface, mixed)
-    assert (a.degree, a.true_degree()) == (12, 6)
-    assert (b.degree, b.true_degree()) == (12, 9)
+    assert composition_degree(surface, iso2) == 6 and composition_degree(surface, mixed) == 9  # sympy substitution
+    def degree_of_b(claim_):
+        true = composition_degree(surface, mixed)
+        return None if claim_(true) else f"true degree {true} for the non-isoparametric quadratic K on a bicubic patch"
     return erratum(
         "Otherwise, F(K(t)) is of degree N(l+m)",
         "F(K(t)) has degree <= N(l+m) (the stored degree of Theorem 1); for a polynomial K the true degree is at most "
         "l deg u(t) + m deg v(t), e.g. l N for an isoparametric K of any degree N",
         "bicubic patch: a quadratic u-line gives true degree 6 (not 12); the quadratic K = (u, v) with u(t) linear and "
         "v(t) quadratic (not degree raised) gives true degree 3*1 + 3*2 = 9 (exact reduction)",
+        printed_form=lambda d: d == 12, corrected_form=lambda d: d <= 12, check=L.predicate(degree_of_b), reference='exact',
     )
 
 
@@ -212,9 +257,14 @@ def section6_weights():
     unit = BezierCurve([["1/4", "1/3"], ["3/4", "1/3"]])
     printed = BezierCurve.from_homogeneous(statement1_points(surface.homogeneous(), unit.homogeneous()))
     assert not printed.same_curve(true)
+    def equals_composition(with_beta):
+        K = curve if with_beta else unit
+        net = BezierCurve.from_homogeneous(statement1_points(surface.homogeneous(), K.homogeneous()))
+        return None if net == true else "the weighted net is not F(K(t)) for beta = (1, 3)"
     return erratum(
         "Omega_R = omega^{l,m}_{0,0}(u_{I^u}^l, v*^m) (the beta_I of K do not appear; 'w.l.o.g. beta_0 = beta_N = 1')",
         "Omega_R B_R = beta_0^(l-R) beta_1^R (omega F)(u_0^(l-R), u_1^R, v*^m), Omega_R likewise",
         "normalizing beta_0 = beta_1 = 1 is a Möbius reparametrization of K: the printed net is the same point set but not "
         "F(K(t)) (exact comparison for beta = (1, 3) on a rational biquadratic); with the beta factors it equals F(K(t))",
+        printed_form=False, corrected_form=True, check=L.predicate(equals_composition), reference='independent-algorithm',
     )

@@ -12,6 +12,7 @@ import sympy as sp
 from gmpy2 import mpq
 
 from exactcagd.toolbox import basics as b
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified, verified_range
 
 
@@ -36,11 +37,16 @@ def angle_example():
     deg = float(b.angle((1, 2, 4), (3, -4, 2)).evalf(30)) * 180 / float(sp.pi.evalf(30))
     assert abs(deg - 83.02) < 0.005
     assert b.length_squared((-3, -4, 2)) == b.length_squared((3, -4, 2))
+    def denominator_norms(w):
+        ref = sp.sqrt(21) * sp.sqrt(29)  # |(1,2,4)| |(3,-4,2)| of the example's vectors
+        got = sp.sqrt(sum(x * x for x in (1, 2, 4))) * sp.sqrt(sum(x * x for x in w))
+        return None if tuple(w) == (3, -4, 2) and got == ref else f"vector {w} is not the example's (3,-4,2) (its norm is sqrt{sum(x * x for x in w)})"
     return erratum(
         printed="|(1,2,4)||(-3,-4,2)| in the denominator",
         corrected="|(1,2,4)||(3,-4,2)|",
         detail=f"typo in the sign of one component; both norms are sqrt(29), so the result 3/(sqrt21 sqrt29) = {c} "
         f"and theta = {deg:.4f} deg hold exactly",
+        printed_form=(-3, -4, 2), corrected_form=(3, -4, 2), check=L.predicate(denominator_norms), reference='text',
     )
 
 
@@ -115,8 +121,14 @@ def rotation_cross_reference():
     th = sp.Symbol("theta")
     r = u * sp.cos(th) + v * sp.sin(th)
     assert sp.simplify(r.dot(r)) == 1 and sp.simplify(r.dot(u) - sp.cos(th)) == 0
+    EQS = {"(3.1)": "Horner's rule", "(1.5)": "r = u cos(theta) + v sin(theta)"}
+
+    def is_rotation_equation(tag):
+        return None if "cos" in EQS[tag] else f"equation {tag} is {EQS[tag]}"
     return erratum(printed="equation (3.1)", corrected="equation (1.5): r = u cos(theta) + v sin(theta)",
-                   detail="(3.1) in chapter 3 is Horner's algorithm; the rotation step is (1.5), checked: |r| = |u|, r.u = cos theta")
+                   detail="(3.1) in chapter 3 is Horner's algorithm; the rotation step is (1.5), checked: |r| = |u|, r.u = cos theta",
+        printed_form='(3.1)', corrected_form='(1.5)', check=L.predicate(is_rotation_equation), reference='text',
+    )
 
 
 @claim(doc="sederberg", section="1.3.1", ref="(1.11)-(1.27)", statement="4x4 matrix M of the rotation about an arbitrary axis, with T1, T2, T3")

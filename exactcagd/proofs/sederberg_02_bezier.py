@@ -15,6 +15,7 @@ from gmpy2 import mpq
 
 from exactcagd import BezierCurve
 from exactcagd.exact import bernstein as bz
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified, verified_range
 from exactcagd.proofs._sederberg_common import (
     Q,
@@ -152,10 +153,12 @@ def elevation_derivation_sign():
     pts = rand_points(r, 4, 2)
     c = BezierCurve(pts)
     assert c.elevate(1).same_curve(c)
+    Bn_ = sp.binomial(n, i) * t_**i * (1 - t_) ** (n - i)
     return erratum(
         printed="(1+t) B_i^n(t) + t B_i^n(t)",
         corrected="(1-t) B_i^n(t) + t B_i^n(t)",
         detail="[(1-t)+t] = 1 is the factor multiplied in; (1+t)B + tB != B (sympy); the final formula (2.8) is right",
+        printed_form=(1 + t_) * Bn_ + t_ * Bn_, corrected_form=(1 - t_) * Bn_ + t_ * Bn_, check=L.same_expr(Bn_),
     )
 
 

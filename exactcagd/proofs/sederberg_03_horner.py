@@ -13,6 +13,7 @@ import sympy as sp
 from gmpy2 import mpq
 
 from exactcagd.exact import bernstein as bz
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 from exactcagd.proofs._sederberg_common import Rs, bernstein_expr, rand_q, rng, t_
 
@@ -87,10 +88,15 @@ def taylor_expansion_factorial():
         d = bz.derivative(d)
     assert [Rs(derivs[i]) / sp.factorial(i) for i in range(6)] == [Rs(x) for x in power]
     assert any(Rs(derivs[i]) / i != Rs(power[i]) for i in range(3, 6) if derivs[i] != 0)
+    def taylor_coefficients(divisor):
+        got = [Rs(derivs[i]) / divisor(i) for i in range(6)]
+        ref = [Rs(x) for x in power]
+        return None if got == ref else f"coefficients {got[:5]} vs power basis {ref[:5]}"
     return erratum(
         printed="... + B^(i)(0) t^i / i + ...",
         corrected="... + B^(i)(0) t^i / i! + ...",
         detail="Taylor coefficients need i! (as (3.1) then uses); exactcagd derivatives at 0 divided by i! equal to_power, divided by i they do not (i >= 3)",
+        printed_form=lambda i: max(i, 1), corrected_form=sp.factorial, check=L.predicate(taylor_coefficients),
     )
 
 
@@ -134,10 +140,14 @@ def derivative_at_zero_sign():
     printed = [falling(i) * sum((-1) ** (i - j + 1) * sp.binomial(i, j) * Rs(b[j]) for j in range(i + 1)) for i in range(n + 1)]
     assert [Rs(v) for v in values] == corrected
     assert printed == [-x for x in corrected] and printed != corrected
+    def matches_derivatives(values_):
+        ref = [Rs(v) for v in values]
+        return None if list(values_) == ref else f"B'(0) = {values_[1]}, exact derivative {ref[1]}"
     return erratum(
         printed="(-1)^(i-j+1)",
         corrected="(-1)^(i-j)",
         detail="with the printed sign B'(0) would be n(b0 - b1); the exact derivatives at 0 (exactcagd) match (-1)^(i-j)",
+        printed_form=printed, corrected_form=corrected, check=L.predicate(matches_derivatives), reference='exact',
     )
 
 
@@ -163,11 +173,20 @@ def difference_table():
                 row.append(row[-1] + rows[j + 1][k])
             rows[j] = row
         assert [Rs(x) for x in bz.from_power(power)] == rows[0] == [Rs(x) for x in b]
+    def first_difference_label(label):
+        # the entry b_1^0 - b_0^0 sits in column 1, row 0 of the forward table: its label is b_0^1
+        bb = [Rs(x) for x in b]
+        table_ = {(i, 0): bb[i] for i in range(len(bb))}
+        if len(bb) > 1:
+            table_[(0, 1)] = bb[1] - bb[0]
+        i_, j_ = label
+        return None if table_.get((i_, j_)) == bb[1] - bb[0] else f"b_{i_}^{j_} is not b_1^0 - b_0^0 in the forward table"
     return reconstructed(
         printed="b_1^1 = b_1^0 - b_0^0 = p_1 / C(n,1) (first column) and b_n^0 = b_n^0 - b_(n-1)^0 (second row, last column)",
         corrected="b_0^1 = b_1^0 - b_0^0 = p_1 / C(n,1) and b_(n-1)^1 = b_n^0 - b_(n-1)^0",
         detail="two table labels are garbled; the procedure (forward table, left column times C(n,i); backwards for the inverse) "
         "reproduces exactcagd to_power / from_power exactly for degrees 0..7",
+        printed_form=(1, 1), corrected_form=(0, 1), check=L.predicate(first_difference_label), reference='exact',
     )
 
 

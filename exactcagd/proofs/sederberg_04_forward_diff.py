@@ -10,6 +10,7 @@ from gmpy2 import mpq
 
 from exactcagd import BezierCurve
 from exactcagd.toolbox import forward_diff as fd
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified, verified_range
 
 x, d = sp.symbols("x delta")
@@ -88,11 +89,19 @@ def rasterization_delta():
         dd = max(max(abs(b[0] - a[0]), abs(b[1] - a[1])) for a, b in zip(pts[:-1], pts[1:]))
         hodo = curve.derivative().control_points
         assert all(abs(v) <= n * dd for p in hodo for v in p)
+    def bounds_hodograph(dfun):
+        for pts_ in ([[40, 40], [20, 30], [0, 0]], [[0, 0], [5, -30], [9, 2]]):
+            cv = BezierCurve(pts_)
+            dd = dfun(pts_)
+            if not all(abs(v) <= cv.degree * dd for p in cv.derivative().control_points for v in p):
+                return f"d = {dd} for {pts_}: n d does not bound the hodograph"
+        return None
     return erratum(
         printed="d = max{x_i - x_{i-1}, y_i - y_{i-1}}",
         corrected="d = max{|x_i - x_{i-1}|, |y_i - y_{i-1}|} (and ceil(n d) steps when d is not an integer)",
         detail=f"without absolute values d = {printed_d} for the curve (40,40),(20,30),(0,0); with them, 25 random curves rasterize exactly "
         "without gaps (8-connected pixels) and n d bounds every hodograph coordinate",
+        printed_form=lambda ps: max(max(b_[0] - a_[0], b_[1] - a_[1]) for a_, b_ in zip(ps[:-1], ps[1:])), corrected_form=lambda ps: max(max(abs(b_[0] - a_[0]), abs(b_[1] - a_[1])) for a_, b_ in zip(ps[:-1], ps[1:])), check=L.predicate(bounds_hodograph), reference='exact',
     )
 
 

@@ -8,6 +8,7 @@ from fractions import Fraction
 import sympy as sp
 
 from exactcagd.toolbox import blending as bl
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified, verified_range
 
 t = bl.T
@@ -31,9 +32,13 @@ def symmetry_on_interval():
     assert all(sp.expand(bern[i] - bern[3 - i].subs(t, t0 + t1 - t)) == 0 for i in range(4))
     # with the printed "t1 + t2 - t" read as the next interval's end (t2 = 5 here) the identity fails
     assert any(sp.expand(bern[i] - bern[3 - i].subs(t, t1 + 5 - t)) != 0 for i in range(4))
+    def reflection_symmetry(expr):
+        return None if all(sp.expand(bern[i] - bern[3 - i].subs(t, expr)) == 0 for i in range(4)) else f"t -> {expr} does not map [1, 3] onto itself"
     return erratum(printed="f_i(t1 + t2 - t)", corrected="f_i(t0 + t1 - t)",
                    detail="the Bernstein basis on [1, 3] is symmetric under t -> t0 + t1 - t = 4 - t; "
-                          "the domain [t0, t1] has no t2, and t -> t1 + t2 - t does not map it onto itself")
+                          "the domain [t0, t1] has no t2, and t -> t1 + t2 - t does not map it onto itself",
+        printed_form=t1 + 5 - t, corrected_form=t0 + t1 - t, check=L.predicate(reflection_symmetry),
+    )
 
 
 @claim(doc="sederberg", section="5", ref="Example", statement="f = ((t-1)^2, 2t(1-t), 2t^2)/(t^2+1): coordinate system independent, convex hull, not symmetric, linearly independent, interpolates the end points")
@@ -86,9 +91,15 @@ def timmer_derivative():
     assert (Q.diff(t).subs(t, 0) - 4 * (P[1] - P[0])).applyfunc(sp.expand) == sp.zeros(2, 1)
     assert (Q.diff(t).subs(t, 1) - 4 * (P[3] - P[2])).applyfunc(sp.expand) == sp.zeros(2, 1)
     assert (Q.diff(t) - 4 * (P[1] - P[0])).applyfunc(sp.expand) != sp.zeros(2, 1)
+    Qd = Q.diff(t)
+    def derivative_value(at):
+        diff = (Qd.subs(t, at) if at != 't' else Qd) - 4 * (P[1] - P[0])
+        return None if diff.applyfunc(sp.expand) == sp.zeros(2, 1) else f"Q'({at}) - 4(Q1 - Q0) = {list(diff.applyfunc(sp.expand))}"
     return erratum(printed="Q'(t) = 4(Q1 - Q0)", corrected="Q'(0) = 4(Q1 - Q0)",
                    detail="the derivative of the Timmer basis is as printed; at t = 0 it is 4(Q1 - Q0), at t = 1 it is 4(Q3 - Q2); "
-                          "Q'(t) is not constant")
+                          "Q'(t) is not constant",
+        printed_form='t', corrected_form=0, check=L.predicate(derivative_value),
+    )
 
 
 @claim(doc="sederberg", section="5.1", ref="Example (conversion)", statement="P0 = Q0, P3 = Q3, 3(P1 - P0) = 4(Q1 - Q0) -> Q1 = (P0 + 3P1)/4, Q2 = (P3 + 3P2)/4")

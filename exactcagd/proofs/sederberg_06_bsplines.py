@@ -22,6 +22,7 @@ from gmpy2 import mpq
 from exactcagd import BezierCurve, BSplineCurve
 from exactcagd.exact import bernstein as bz
 from exactcagd.exact import knots as kn
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 from exactcagd.proofs._sederberg_common import Q, Rs, polar_value, rand_points, rand_q, rng
 
@@ -184,11 +185,14 @@ def boehm_extraction_example():
     moved = arr.copy()
     moved[4], moved[5] = _np([100, -100]), _np([-7, 55])
     assert all(tuple(kn.de_boor(moved, knots, 3, 3 + mpq(k, 8))) == tuple(kn.de_boor(arr, knots, 3, 3 + mpq(k, 8))) for k in range(9))
+    def ratio_reproduces_de_boor(frac):
+        return None if matches(bezier_over_34(frac)) else f"Bezier points with P(4,4,5) {frac} of the way differ from de Boor on [3, 4]"
     return erratum(
         printed="P(4,4,5) (2/3 of the way from P(3,4,5) to P(6,4,5))",
         corrected="P(4,4,5) is 1/3 of the way from P(3,4,5) to P(6,4,5) (the argument moves from 3 to 6 and stops at 4)",
         detail="Bézier points built with 1/3 reproduce exactcagd's de Boor values on [3,4] exactly, with 2/3 they do not; "
         "the other ratios (1/3, 2/3, 2/3, 1/2, 1/2) and the local-control remark are right",
+        printed_form=mpq(2, 3), corrected_form=mpq(1, 3), check=L.predicate(ratio_reproduces_de_boor), reference='independent-algorithm',
     )
 
 
@@ -206,10 +210,13 @@ def local_control_count():
         pieces = BSplineCurve(moved, knots).to_bezier()
         counts.append(sum(1 for (s, a), (_, b) in zip(base, pieces) if a != b))
     assert set(counts) == {p + 1}
+    def bound_holds(bound):
+        return None if max(counts) <= bound(p) else f"moving one control point changes {max(counts)} segments > {bound(p)}"
     return erratum(
         printed="any given control point can influence at most n curve segments",
         corrected="at most n + 1 curve segments (the support of a degree-n basis function spans n + 1 knot intervals)",
         detail="moving one interior control point of a cubic spline (simple knots) changes exactly 4 extracted Bézier pieces (exactcagd)",
+        printed_form=lambda n: n, corrected_form=lambda n: n + 1, check=L.predicate(bound_holds), reference='independent-algorithm',
     )
 
 
@@ -262,10 +269,15 @@ def knot_insertion_example():
     assert [2 * mpq(1) - 1, 2 * mpq(5, 2) - 4] == [1, 1] and [2 * mpq(7) - 7, 2 * mpq(5, 2) - 4] == [7, 1]
     curve = BezierCurve(pts)
     assert all(new.evaluate(1 + mpq(4 * k, 8)) == curve.evaluate(mpq(k, 8)) for k in range(9))
+    def ends_reproduce_printed_points(ends):
+        first, last = ends
+        sp_ = BSplineCurve([first, [1, 4], [4, 7], [7, 4], last], kn.from_notes_knots([1, 1, 1, 1, 5, 5, 5, 5])).insert_knot(3)
+        return None if sp_.control_points == tuple(tuple(Q(x) for x in p_) for p_ in expected) else "the printed f(1,1,1,3), f(3,5,5,5) are not reproduced"
     return reconstructed(
         printed="f(1,1,1,1) and f(5,5,5,5) only in the lost Figure 6.9",
         corrected="f(1,1,1,1) = (1,1), f(5,5,5,5) = (7,1) (forced by the printed f(1,1,1,3) and f(3,5,5,5)); new knot vector [111135555]",
         detail="exactcagd insert_knot(3) reproduces all four printed points exactly and the curve is unchanged",
+        printed_form=L.LOST, lost_reason='the end control points are only in the lost Figure 6.9', corrected_form=([1, 1], [7, 1]), check=L.predicate(ends_reproduce_printed_points), reference='independent-algorithm',
     )
 
 

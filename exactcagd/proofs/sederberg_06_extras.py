@@ -8,6 +8,8 @@ combining Bézier curves (6.12), knot intervals (6.13) and basis functions (6.14
 
 from __future__ import annotations
 
+import functools
+
 import random
 
 import numpy as np
@@ -18,6 +20,7 @@ from exactcagd.exact import bernstein as bz
 from exactcagd.geometry.bezier_curve import BezierCurve
 from exactcagd.toolbox import bspline_extras as bx
 from exactcagd.toolbox import knot_intervals as ki
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, not_checkable, verified, verified_range
 
 T = sp.Symbol("t")
@@ -53,6 +56,20 @@ def _cox_sym(i, p, knots, t, span):
 
 
 # ---------------------------------------------------------------------------- 6.5, 6.6, 6.9, 6.10
+@functools.lru_cache(maxsize=None)
+def _sympy_basis(kn):
+    T = sp.Symbol("T_")
+    return sp.lambdify(T, sp.bspline_basis(len(kn) - 2, kn, 0, T), "sympy"), T
+
+
+def _sympy_N(knots, x):
+    """B-spline basis function N[knots](x) by sympy's bspline_basis (independent of exactcagd.bspline); degree len - 2."""
+    kn = tuple(sp.Rational(str(k)) for k in knots)
+    f, _ = _sympy_basis(kn)
+    val = sp.sympify(f(sp.Rational(str(x))))
+    return mpq(int(sp.numer(val)), int(sp.denom(val)))
+
+
 @claim(doc="sederberg", section="6.5", ref="periodic B-splines",
        statement="a B-spline whose first n control points equal the last n and whose first n knot intervals equal the last n closes on itself")
 def periodic_closes():
@@ -200,11 +217,18 @@ def c1_condition():
         assert np.all(corrected == 0) == (mult < 3)
         if mult < 3:
             assert np.any(printed != 0)
+    def c1_test(cond):
+        for mult in (0, 1, 2):
+            (a_, b_, c_, d_, e_), P_, Q_ = _c612(mult)
+            if not np.all(cond(P_, Q_, c_, d_, e_) == 0):
+                return f"fails on an exact C^{3 - mult} spline (knots {a_}, {b_}, {c_}, {d_}, {e_})"
+        return None
     return erratum(
         printed="(P_n - P_{n-1})(k_{i+1} - k_i) = (Q_1 - P_n)(e - k_{i+1})",
         corrected="(P_n - P_{n-1})(e - k_{i+1}) = (Q_1 - P_n)(k_{i+1} - k_i)",
         detail="C^1 means f(k_{i+1}, k_{i+1}, x) is one affine map: (Q_1 - P_n)/(e - k_{i+1}) = (P_n - P_{n-1})/(k_{i+1} - k_i); "
         "the printed form swaps the two interval lengths (fails on exact C^1, C^2, C^3 splines with unequal spans)",
+        printed_form=lambda P_, Q_, c_, d_, e_: (P_[-1] - P_[-2]) * (d_ - c_) - (Q_[1] - P_[-1]) * (e_ - d_), corrected_form=lambda P_, Q_, c_, d_, e_: (P_[-1] - P_[-2]) * (e_ - d_) - (Q_[1] - P_[-1]) * (d_ - c_), check=L.predicate(c1_test), reference='exact',
     )
 
 
@@ -227,11 +251,18 @@ def p_alpha():
         second_printed = ((d - c) * Q[2] + (e - d) * Q[1]) / (e - c)
         second = ((e - c) * Q[1] - (d - c) * Q[2]) / (e - d)
         assert np.all(first == second) and np.any(first != second_printed)
+    def equals_first_form(rhs):
+        for mult in (0, 1):
+            (a_, b_, c_, d_, e_), P_, Q_ = _c612(mult)
+            if not np.all(((d_ - e_) * P_[-3] + (e_ - b_) * P_[-2]) / (d_ - b_) == rhs(Q_, c_, d_, e_)):
+                return f"differs from the (correct) left-hand form on an exact spline (mult {mult})"
+        return None
     return erratum(
         printed="P_alpha = ((k_{i+1}-k_i) Q_2 + (e-k_{i+1}) Q_1)/(e-k_i)",
         corrected="P_alpha = ((e-k_i) Q_1 - (k_{i+1}-k_i) Q_2)/(e-k_{i+1})",
         detail="P_alpha = f(k_i, k_{i+1}, e) extrapolates the line f(k_{i+1}, e, x) through Q_1 (x = k_{i+1}) and Q_2 (x = e) to x = k_i; "
         "the printed right-hand form interpolates instead. The first form is correct (checked on exact C^2 and C^3 splines).",
+        printed_form=lambda Q_, c_, d_, e_: ((d_ - c_) * Q_[2] + (e_ - d_) * Q_[1]) / (e_ - c_), corrected_form=lambda Q_, c_, d_, e_: ((e_ - c_) * Q_[1] - (d_ - c_) * Q_[2]) / (e_ - d_), check=L.predicate(equals_first_form), reference='exact',
     )
 
 
@@ -252,12 +283,15 @@ def p_beta_gamma():
     assert np.all(beta == coarse[-3]) and np.all(gamma == coarse[-2]) and np.any(beta_printed != beta)
     assert np.all(alpha == ((e - d) * beta + (d - b) * gamma) / (e - b))
     assert np.any(alpha != ((e - d) * beta_printed + (d - b) * gamma) / (e - b))
+    def is_coarse_point(beta_):
+        return None if np.all(beta_ == coarse[-3]) else f"P_beta = {list(beta_)} but the spline without k_(i+1) has {list(coarse[-3])}"
     return erratum(
         printed="P_beta = ((e - k_{i-2}) P_{n-2} + (k_{i-1} - e) P_{n-3})/(k_{i-1} - k_{i-2})",
         corrected="P_beta = ((k_{i+1} - e) P_{n-3} + (e - k_{i-2}) P_{n-2})/(k_{i+1} - k_{i-2})",
         detail="P_beta = f(k_{i-1}, k_i, e) lies on the line f(k_{i-1}, k_i, x) through P_{n-3} (x = k_{i-2}) and P_{n-2} (x = k_{i+1}); "
         "P_gamma and the C^3 condition are correct; with the corrected P_beta they reproduce the control points of the "
         "spline with k_{i+1} removed exactly, with the printed P_beta the C^3 test fails on an exact C^3 junction",
+        printed_form=beta_printed, corrected_form=beta, check=L.predicate(is_coarse_point), reference='independent-algorithm',
     )
 
 
@@ -450,15 +484,31 @@ def refinement_6142():
         for k in [kv[0] + mpq(1, 3), (kv[1] + kv[2]) / 2, kv[-1] - mpq(1, 5)]:
             (c, left), (d, right) = bx.refine_basis_function(kv, k)
             for x in [kv[0] + (kv[-1] - kv[0]) * mpq(j, 11) for j in range(12)]:
-                assert bx.basis_function(kv, x) == c * bx.basis_function(left, x) + d * bx.basis_function(right, x)
+                assert _sympy_N(kv, x) == _sympy_N([0] * 0 + list(left), x) * c + d * _sympy_N(list(right), x)
             if k < kv[n]:
                 printed_c = (k - kv[0]) / (kv[n + 1] - kv[0])
                 assert printed_c != c
+    def left_coefficient(den):
+        # Boehm's identity N[s0..s(n+1)] = c N[s0..k..sn] + d N[s1..k..s(n+1)] at the example knots, reference: sympy bspline_basis
+        T_ = sp.Symbol("T_")
+        kv = [sp.Integer(v) for v in (0, 1, 3, 4, 6)]
+        k_ = sp.Rational(2)
+        n_ = len(kv) - 2
+        full = sp.bspline_basis(n_, tuple(kv), 0, T_)
+        left = sp.bspline_basis(n_, tuple(sorted(kv[:-1] + [k_])), 0, T_)
+        right = sp.bspline_basis(n_, tuple(sorted(kv[1:] + [k_])), 0, T_)
+        c_ = (k_ - kv[0]) / den(kv, n_)
+        d_ = (kv[-1] - k_) / (kv[-1] - kv[1])
+        for x_ in (sp.Rational(1, 2), sp.Rational(5, 2), sp.Rational(7, 2), sp.Rational(11, 2)):
+            if (full - c_ * left - d_ * right).subs(T_, x_) != 0:
+                return f"at s = {x_}: N = {full.subs(T_, x_)}, c N_left + d N_right = {(c_ * left + d_ * right).subs(T_, x_)}"
+        return None
     return erratum(
         printed="c_i = (k - s_0)/(s_{n+1} - s_0)",
         corrected="c_i = (k - s_0)/(s_n - s_0)",
         detail="the knot-insertion (Boehm) coefficient of the left function; (15.14)-(15.16) print the correct s_3 - s_0 for n = 3. "
         "Verified exactly at 12 points per case for degrees 2, 3, 4; d_i is correct",
+        printed_form=lambda kv, n_: kv[n_ + 1] - kv[0], corrected_form=lambda kv, n_: kv[n_] - kv[0], check=L.predicate(left_coefficient), reference='sympy',
     )
 
 
@@ -483,12 +533,38 @@ def recurrence():
                 assert bx.basis_recurrence(knots, i, k, t) == ref
                 bad |= printed(i, k, t) != ref
     assert bad
+    def cox_de_boor(den_offset):
+        # against the divided-difference-free reference N (exactcagd.bspline explicit pieces are not used here):
+        # sympy's bspline_basis on the same knots
+        import sympy as _sp
+        T_ = _sp.Symbol("T")
+        kn_ = tuple(_sp.Rational(int(k.numerator), int(k.denominator)) for k in knots)
+
+        def _rec(kv, i, k, tt, off):
+            # (6.14) with w_i^k = (t - t_i)/(t_(i+k+off) - t_i); B_i^0 the indicator of [t_i, t_(i+1))
+            if k == 0:
+                return mpq(1) if kv[i] <= tt < kv[i + 1] else mpq(0)
+            w = lambda j: (tt - kv[j]) / (kv[j + k + off] - kv[j]) if kv[j + k + off] != kv[j] else mpq(0)  # noqa: E731
+            return w(i) * _rec(kv, i, k - 1, tt, off) + (1 - w(i + 1)) * _rec(kv, i + 1, k - 1, tt, off)
+
+        for k in (1, 2):
+            for i in range(0, len(knots) - k - 2):
+                ref = _sp.bspline_basis(k, kn_, i, T_)
+                for j in range(1, 20):
+                    tt = knots[0] + (knots[-1] - knots[0]) * mpq(j, 20)
+                    if tt in knots:
+                        continue
+                    mine = _rec(knots, i, k, tt, den_offset)
+                    if _sp.Rational(int(mine.numerator), int(mine.denominator)) != ref.subs(T_, _sp.Rational(int(tt.numerator), int(tt.denominator))):
+                        return f"B_{i}^{k}({tt}) = {mine}, sympy bspline_basis {ref.subs(T_, _sp.Rational(int(tt.numerator), int(tt.denominator)))}"
+        return None
     return erratum(
         printed="w_i^k(t) = (t - t_i)/(t_{i+k-1} - t_i)",
         corrected="w_i^k(t) = (t - t_i)/(t_{i+k} - t_i), with B_i^0 the indicator of [t_i, t_{i+1})",
         detail="with t_{i+k-1} the degree-1 step always takes the 'otherwise 0' branch and B_i^1 = B_{i+1}^0; the corrected "
         "recurrence equals the explicit basis function at 19 points per function for k = 1, 2, 3 (the closed indicator "
         "[t_i, t_{i+1}] of the notes double-counts at knots)",
+        printed_form=-1, corrected_form=0, check=L.predicate(cox_de_boor), reference='sympy',
     )
 
 
@@ -506,11 +582,21 @@ def curve_from_recurrence():
         printed = sum((bx.basis_recurrence(knots, j + 1 - n, n, t) * label[j] for j in range(i, n + i + 1)), start=mpq(0))
         corrected = sum((bx.basis_recurrence(knots, j - n, n, t) * label[j] for j in range(i, n + i + 1)), start=mpq(0))
         assert corrected == value and printed != value
+    def index_shift(shift):
+        for r in range(1, 5):
+            tt = knots[i] + (knots[i + 1] - knots[i]) * mpq(r, 5)
+            ctrl = np.array([[label[j]] for j in range(i, i + n + 1)], dtype=object)
+            value = bx.segment_blossom(ctrl, knots[i + 1 - n : i + n + 1], [tt] * n)[0]
+            got = sum((bx.basis_recurrence(knots, j + shift - n, n, tt) * label[j] for j in range(i, n + i + 1)), start=mpq(0))
+            if got != value:
+                return f"at t = {tt}: sum = {got}, polar value f(t,t,t) = {value}"
+        return None
     return erratum(
         printed="B^n_{j+1-n}(t) P(t_{j+1-n}, ..., t_j)",
         corrected="B^n_{j-n}(t) P(t_{j+1-n}, ..., t_j)",
         detail="with (6.14) B_i^n is supported on [t_i, t_{i+n+1}]; the control point labelled (t_{j+1-n}..t_j) needs the "
         "function supported on [t_{j-n}, t_{j+1}]; checked against the polar value f(t, t, t) of the segment (de Boor)",
+        printed_form=1, corrected_form=0, check=L.predicate(index_shift), reference='independent-algorithm',
     )
 
 

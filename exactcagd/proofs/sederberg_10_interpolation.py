@@ -11,6 +11,7 @@ from gmpy2 import mpq
 
 from exactcagd import BezierCurve
 from exactcagd.toolbox import interpolation as ip
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 
 t = sp.Symbol("t")
@@ -36,9 +37,14 @@ def bernstein_matrix():
     rows = [[sp.binomial(3, i) * u**i * (1 - u) ** (3 - i) for i in range(4)] for u in (sp.Integer(0), sp.Rational(1, 4), sp.Rational(3, 4), sp.Integer(1))]
     assert rows[1] == [sp.Rational(27, 64), sp.Rational(27, 64), sp.Rational(9, 64), sp.Rational(1, 64)]
     assert rows[2] == [sp.Rational(1, 64), sp.Rational(9, 64), sp.Rational(27, 64), sp.Rational(27, 64)]
+    def is_bernstein_row(row):
+        ref = [sp.binomial(3, i) * sp.Rational(3, 4) ** i * sp.Rational(1, 4) ** (3 - i) for i in range(4)]
+        return None if list(row) == ref else f"{list(row)} vs B^3_i(3/4) = {ref}"
     return reconstructed(printed="third row 1/64, 64/64, 64/64, 64/64",
                          corrected="third row 1/64, 9/64, 27/64, 27/64 (B^3_i(3/4), the mirror of the second row)",
-                         detail="the extracted row is damaged; the Bernstein values at t = 3/4 are computed exactly")
+                         detail="the extracted row is damaged; the Bernstein values at t = 3/4 are computed exactly",
+        printed_form=[sp.Rational(1, 64), 1, 1, 1], corrected_form=[sp.Rational(1, 64), sp.Rational(9, 64), sp.Rational(27, 64), sp.Rational(27, 64)], check=L.predicate(is_bernstein_row),
+    )
 
 
 @claim(doc="sederberg", section="10.1", ref="Bézier control points", statement="x: a0 = 0, a1 = 6, a2 = -4, a3 = 2; y: 0, 4, 16/9, 4")
@@ -154,9 +160,18 @@ def linear_error():
         eps = Fraction(1, rng.choice([3, 10, 40]))
         m = ip.bezier_segments_for_tolerance(c, eps)
         assert ip.polyline_max_deviation_squared(c, m) <= eps * eps
+    def is_upper_bound(rhs):
+        # f = x^2 on [0, 1], p1 = x: the bound must dominate |f - p1| on [0, 1]
+        for k in range(1, 10):
+            xv_ = sp.Rational(k, 10)
+            if rhs(xv_) < abs((f - p1).subs(t, xv_)):
+                return f"at x = {xv_}: bound {rhs(xv_)} < |f - p1| = {abs((f - p1).subs(t, xv_))}"
+        return None
     return erratum(printed="max(f'')/2 (x - x0)(x - x1)", corrected="max|f''|/2 |(x - x0)(x - x1)|  (<= L delta^2 / 8)",
                    detail="for f = x^2 on [0, 1] the printed right side is -1/4 at x = 1/2 while |f - p1| = 1/4; with absolute values "
-                          "the bound holds, and the segment counts (10.2)-(10.3) certify 8 random curves exactly (max deviation <= eps)")
+                          "the bound holds, and the segment counts (10.2)-(10.3) certify 8 random curves exactly (max deviation <= eps)",
+        printed_form=lambda xx: sp.Rational(2, 2) * (xx - x0) * (xx - x1), corrected_form=lambda xx: sp.Rational(2, 2) * abs((xx - x0) * (xx - x1)), check=L.predicate(is_upper_bound),
+    )
 
 
 @claim(doc="sederberg", section="10.6", ref="(10.2)-(10.4)", statement="m >= sqrt(sqrt(Lx^2 + Ly^2)/(8 eps)) segments; r = log2 sqrt(sqrt(Lx^2 + Ly^2)/(8 eps)) bisections")
@@ -179,11 +194,17 @@ def uniform_spacing():
         m = ip.node_polynomial_max([Fraction(i, n) for i in range(n + 1)], 0, 1)
         ratios.append((n, float(m) * 3**n, float(m) * 3 ** (n + 1)))
     assert all(0.2 < r < 0.3 for _, r, _ in ratios) and all(0.7 < r2 < 0.9 for _, _, r2 in ratios)
+    def exponent_of_estimate(expo):
+        # max |w| / (1/3)^expo(n) must stay O(1) and not drift by a factor 3 per n (exact maxima, n = 4..10)
+        vals = [float(ip.node_polynomial_max([Fraction(i, n) for i in range(n + 1)], 0, 1)) * 3 ** expo(n) for n in (4, 10)]
+        return None if all(0.5 < v < 1.0 for v in vals) else f"max / (1/3)^e(n) = {[round(v, 3) for v in vals]} for n = 4, 10"
     return erratum(printed="x_i = a + (b - a)/n; max ~ ((b - a)/3)^n",
                    corrected="x_i = a + i (b - a)/n; max ~ ((b - a)/3)^(n+1) (there are n + 1 factors)",
                    detail="exact maxima (RealAlgebraic) for n = 4..10 on [0, 1]: max / (1/3)^n in "
                           f"[{min(r for _, r, _ in ratios):.3f}, {max(r for _, r, _ in ratios):.3f}] (off by a factor ~4), "
-                          f"max / (1/3)^(n+1) in [{min(r for _, _, r in ratios):.3f}, {max(r for _, _, r in ratios):.3f}]")
+                          f"max / (1/3)^(n+1) in [{min(r for _, _, r in ratios):.3f}, {max(r for _, _, r in ratios):.3f}]",
+        printed_form=lambda n: n, corrected_form=lambda n: n + 1, check=L.predicate(exponent_of_estimate), reference='exact',
+    )
 
 
 @claim(doc="sederberg", section="10.6.1", ref="uniform spacing (full range)", statement="for 4 <= n <= 20, max |(x - x0)...(x - xn)| ~ ((b - a)/3)^(n+1)", slow=True)
@@ -210,10 +231,17 @@ def chebyshev_points():
     s = sp.Symbol("s")
     for n in range(0, 8):  # monic scaling: T_{n+1}(s) / 2^n is monic with max 2^-n on [-1, 1]
         assert sp.Poly(sp.chebyshevt(n + 1, s), s).LC() == 2**n
+    def max_formula(expo):
+        for n_, a_, b_ in ((3, 0, 1), (5, -1, 2)):
+            if ip.chebyshev_node_polynomial_max(n_, a_, b_) != 2 * (mpq(b_ - a_) / 4) ** expo(n_):
+                return f"n = {n_} on [{a_}, {b_}]: max = {ip.chebyshev_node_polynomial_max(n_, a_, b_)}, formula {2 * (mpq(b_ - a_) / 4) ** expo(n_)}"
+        return None
     return erratum(printed="i = 0, ..., n-1; max = 2((b-a)/4)^n",
                    corrected="i = 0, ..., n (n + 1 nodes for the n + 1 factors); max = 2((b-a)/4)^(n+1)",
                    detail="omega = ((b-a)/2)^(n+1) 2^-n T_{n+1}((2x-a-b)/(b-a)) exactly; its maximum 2((b-a)/4)^(n+1) is attained at x = b "
-                          "(checked exactly for n = 3, 5, 9); the printed exponent n is off by one")
+                          "(checked exactly for n = 3, 5, 9); the printed exponent n is off by one",
+        printed_form=lambda n_: n_, corrected_form=lambda n_: n_ + 1, check=L.predicate(max_formula), reference='exact',
+    )
 
 
 @claim(doc="sederberg", section="10.7", ref="Hermite", statement="P(t) = P(0)(2t^3 - 3t^2 + 1) + P(1)(-2t^3 + 3t^2) + P'(0)(t^3 - 2t^2 + t) + P'(1)(t^3 - t^2)")

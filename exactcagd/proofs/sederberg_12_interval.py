@@ -17,6 +17,7 @@ from fractions import Fraction
 import sympy
 from gmpy2 import mpq
 
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified, verified_range
 
 T = sympy.Symbol("t")
@@ -236,6 +237,12 @@ def envelope():
     hodo_hi = upper.derivative()
     assert hodo_hi.evaluate(0)[0] > 0 and hodo_hi.evaluate(t0)[0] > 0  # linear: positive on [0, 7/12]
     assert lower.derivative().evaluate(t0)[1] > 0 and lower.derivative().degree == 1
+    def right_edge_on_boundary(tstar):
+        # a box edge belongs to the envelope only if no other box reaches beyond it
+        later_ = box(Fraction(9, 16))
+        px_ = x_hi(tstar)
+        inside = later_[0].lo < px_ < later_[0].hi and later_[1].lo < Fraction(2) * tstar < later_[1].hi
+        return None if not inside and all(x_hi(Fraction(k, 300)) <= px_ for k in range(301)) else f"the right edge at t = {tstar} lies inside the box at t = 9/16"
     return erratum(
         printed="corner curves chosen by the direction of the center curve; segments at horizontal/vertical "
         "tangencies of the center curve",
@@ -247,6 +254,7 @@ def envelope():
         "center's vertical tangency t = 1/2 lies inside the box at t = 9/16; the right edge at t* = 2/3 "
         "(x_hi' = 0, found exactly by stationary_parameters) is the global maximum of x_hi; at t = 7/12 the center "
         "moves NW while the bottom-right corner curve (moving NE) bounds the region",
+        printed_form=Fraction(1, 2), corrected_form=Fraction(2, 3), check=L.predicate(right_edge_on_boundary), reference='exact',
     )
 
 
@@ -460,10 +468,13 @@ def example_quarter_circle():
     bound = 6 * (boxes[2][0].hi - boxes[2][0].lo) / 2 / 16
     assert round(float(bound), 4) == 0.0079
     assert sympy.simplify(6 * (sympy.pi**4 / 2304) / 2 / 16 - sympy.pi**4 / 12288) == 0
+    def basis_degree(deg):
+        return None if deg == len(boxes) - 1 else f"B_k^{deg} with {len(boxes)} coefficients"
     return erratum(
         printed="coefficients 'expressed in equation (12.67)'; (12.76) with basis B_k^n(t)",
         corrected="the coefficients are those of (12.77) (with [P^(4)] = [0, pi^4/16] per coordinate); the basis of "
         "(12.76) is B_k^4(t)",
         detail="values (12.78) reproduced with exact pi enclosures; the quarter circle lies in the interval curve at "
         "39 interior parameters (mpmath interval enclosures, exact comparison) and exactly at t = 0, 1; the bound of (12.79) is pi^4/12288 ~ 0.0079",
+        printed_form='n', corrected_form=4, check=L.predicate(basis_degree), reference='text',
     )

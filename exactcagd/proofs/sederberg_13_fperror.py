@@ -16,6 +16,7 @@ import gmpy2
 import numpy as np
 from gmpy2 import mpfr, mpq
 
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 
 
@@ -44,12 +45,18 @@ def decoding_formula():
     for bits, value in printed.items():
         assert _decode(bits) == value, bits
     assert Fraction(1, 4) + Fraction(1, 8) + Fraction(1, 16) == Fraction(7, 16)
+    def covers_exponent_bits(top):
+        # (13.1) lays out the exponent magnitude as e_7 ... e_0 (8 bits): the sum must run over all of them
+        layout = "0|100000001|"  # sign | exponent sign + e_7..e_0 | fraction
+        bits = len(layout.split("|")[1]) - 1
+        return None if top + 1 == bits else f"sum over j = 0..{top} ignores e_{top + 1}..e_{bits - 1} of the {bits}-bit exponent of (13.1)"
     return reconstructed(
         printed="b = (-1)^s f^e, exponent sum over j = 0..6, '32 bits' with 8 exponent bits + exponent sign + 23 fraction bits",
         corrected="b = (-1)^s * f * 2^e with e = (-1)^e_s sum_{j=0..7} e_j 2^j (8 magnitude bits e_7..e_0 as in (13.1)); "
         "the layout of (13.1) has 1 + 1 + 8 + 23 = 33 bits",
         detail="the three printed bit strings decode exactly to 13, 7/16 and -19/2 with the corrected formula "
         "(the '^e' of the extraction is the factor 2^e; the printed sum bound 6 contradicts e_7 in (13.1))",
+        printed_form=6, corrected_form=7, check=L.predicate(covers_exponent_bits), reference='text',
     )
 
 
@@ -70,11 +77,15 @@ def one_third_neighbours():
     with gmpy2.context(precision=23, round=gmpy2.RoundUp):
         assert Fraction(*mpfr(mpq(1, 3)).as_integer_ratio()) == upper
     assert upper_printed > upper  # the printed 21-bit string is above 1/3 but not the adjacent float
+    def is_upper_neighbour(fraction_bits):
+        val = _decode("0|100000001|" + fraction_bits)
+        return None if val == upper else f"{fraction_bits} decodes to {val}, 1/3 rounded up to 23 bits is {upper}"
     return reconstructed(
         printed="upper neighbour fraction 101010101010101010110 (21 bits); 1/3 = 0.0101\\bar0\\bar1_2",
         corrected="upper neighbour fraction 10101010101010101010110 (23 bits); 1/3 = 0.\\overline{01}_2",
         detail="the lower neighbour is as printed (1/3 rounded down to 23 bits, checked with mpfr); the upper one is "
         "1/3 rounded up, 2^-24 above; the printed 21-bit string decodes to a larger, non-adjacent number (two bits lost)",
+        printed_form='101010101010101010110', corrected_form='10101010101010101010110', check=L.predicate(is_upper_neighbour), reference='exact',
     )
 
 
@@ -112,6 +123,10 @@ def float_as_interval():
     with gmpy2.context(precision=d):
         assert mpq(mpfr(x)) == b
     assert x > b * (1 + half)
+    def contains_rounding_set(rel):
+        lo_, hi_ = _rounding_set(b, d)
+        xx = mpq(1, 2) + mpq(3, 2**26)
+        return None if b * (1 + rel) >= hi_ and xx <= b * (1 + rel) else f"x = 1/2 + 3*2^-26 rounds to 1/2 but lies above 1/2 (1 + {rel})"
     return erratum(
         printed="[b] = b[1 - 2^-(d+1), 1 + 2^-(d+1)]",
         corrected="[b] = [b - 2^(e-d-1) (halved below a power of two), b + 2^(e-d-1)] for b = f 2^e, f in [1/2, 1); "
@@ -119,6 +134,7 @@ def float_as_interval():
         "(consistent with (13.5), eta = 2^-d)",
         detail="exact rounding sets at d = 23 for 205 floats: the printed interval is too small for every one; "
         "x = 1/2 + 3*2^-26 rounds to 1/2 but lies outside the printed [1/2]",
+        printed_form=half, corrected_form=eta, check=L.predicate(contains_rounding_set), reference='exact',
     )
 
 
@@ -215,6 +231,12 @@ def affine_map_error():
         else:
             broken += err > _eps(T, P0, P1, eta, False)
     assert broken > 0
+    def bounds_counterexample(corrected_):
+        t_, p0_, p1_ = 0.4799682504469967, 1.9542732406940162, -2.116233999614336
+        T_, P0_, P1_ = Fraction(t_), Fraction(p0_), Fraction(p1_)
+        err_ = abs(Fraction(_affine_fl(t_, p0_, p1_)) - ((1 - T_) * P0_ + T_ * P1_))
+        e_ = _eps(T_, P0_, P1_, eta, corrected=corrected_)
+        return None if err_ <= e_ else f"binary64 t = {t_}: error {float(err_):.3g} > eps {float(e_):.3g}"
     return erratum(
         printed="eps(t) = {|1-t||p0| + |t||p1| + |M(p0, p1, t)|} eta",
         corrected="valid as printed when the weights 1-t and t are exact floats (e.g. t in [1/2, 2], Sterbenz); "
@@ -225,6 +247,7 @@ def affine_map_error():
         f"(worst {float(worst_corr):.3f}). Proof of both with the refined model |fl(x) - x| <= eta/(1+eta)|x|: the error is "
         "(1-t)p0[(1+d0)(1+d1) - 1] + t p1 d2 + d3 S, |S| <= |M| + ...; (13.8) is its first-order part. "
         "Per de Casteljau level this is 3 rounding factors on the (1-t) branch, the k = 3n + 1 of exactcagd.numeric.evaluate",
+        printed_form=False, corrected_form=True, check=L.predicate(bounds_counterexample), reference='exact',
     )
 
 

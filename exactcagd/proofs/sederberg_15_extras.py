@@ -11,6 +11,8 @@ with chapter 16 in ``sederberg_16_points_tangents.py``.
 
 from __future__ import annotations
 
+import functools
+
 import random
 
 import numpy as np
@@ -25,6 +27,7 @@ from exactcagd.toolbox import curvature as cv
 from exactcagd.toolbox import surfaces as sf
 from exactcagd.toolbox.triangular import TriangularBezier
 from exactcagd.toolbox.tsplines import TMesh
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, not_checkable, reconstructed, verified, verified_range
 
 U, V, T = sp.symbols("u v t")
@@ -88,6 +91,20 @@ def _vec(x):
 
 
 # ---------------------------------------------------------------------------- 15.3
+@functools.lru_cache(maxsize=None)
+def _sympy_basis(kn):
+    T = sp.Symbol("T_")
+    return sp.lambdify(T, sp.bspline_basis(len(kn) - 2, kn, 0, T), "sympy"), T
+
+
+def _sympy_N(knots, x):
+    """B-spline basis function N[knots](x) by sympy's bspline_basis (independent of exactcagd.bspline); degree len - 2."""
+    kn = tuple(sp.Rational(str(k)) for k in knots)
+    f, _ = _sympy_basis(kn)
+    val = sp.sympify(f(sp.Rational(str(x))))
+    return mpq(int(sp.numer(val)), int(sp.denom(val)))
+
+
 @claim(doc="sederberg", section="15.3", ref="P_s, P_t, P_st", statement="first and mixed partial derivatives at the corner of a rational patch over [s0,s1] x [t0,t1]")
 def corner_first_mixed():
     rng = _rng(153)
@@ -116,10 +133,13 @@ def corner_second():
         return (k * (k - 1) * w[2, 0] / w[0, 0] * (P[2, 0] - P[0, 0]) - 2 * k * w[1, 0] / w[0, 0] * (k * w[1, 0] - w[0, 0]) / w[0, 0] * (P[1, 0] - P[0, 0])) / (s1 - s0) ** 2
 
     assert _vec(pss(3)) == _vec(d["Puu"]) and _vec(pss(2)) != _vec(d["Puu"])
+    def pss_degree(k):
+        return None if _vec(pss(k)) == ref["Puu"] else f"with {k} the printed P_ss = {_vec(pss(k))}, sympy {ref['Puu']}"
     return erratum(
         printed="P_ss uses n (the t-degree): n(n-1) w20/w00 (P20 - P00) - 2n w10/w00 (n w10 - w00)/w00 (P10 - P00)",
         corrected="P_ss uses m (the s-degree, as in P_s = m/(s1-s0) ...); P_tt with n is correct",
         detail="checked on a rational (3, 2) patch against sympy; with n = 2 instead of m = 3 the printed P_ss is wrong",
+        printed_form=2, corrected_form=3, check=L.predicate(pss_degree), reference='sympy',
     )
 
 
@@ -183,7 +203,7 @@ def triangles():
     bound_lo = (lo(R1) * h * h + 2 * lo(R2) * h * k + lo(R3) * k * k) / 8
     corner = lambda x, y: np.array(S.evaluate(x, y), dtype=object)  # noqa: E731
 
-    def L(x, y, c00, c10, c01, c11):
+    def L_(x, y, c00, c10, c01, c11):
         a, b = (x - al) / h, (y - ze) / k
         if a + b <= 1:
             return c00 + a * (c10 - c00) + b * (c01 - c00)
@@ -196,14 +216,23 @@ def triangles():
         for j in range(9):
             x, y = al + h * mpq(i, 8), ze + k * mpq(j, 8)
             p = np.array(S.evaluate(x, y), dtype=object)
-            worst_good = max(worst_good, sf.dot(p - L(x, y, *good), p - L(x, y, *good)))
-            worst_bad = max(worst_bad, sf.dot(p - L(x, y, *bad), p - L(x, y, *bad)))
+            worst_good = max(worst_good, sf.dot(p - L_(x, y, *good), p - L_(x, y, *good)))
+            worst_bad = max(worst_bad, sf.dot(p - L_(x, y, *bad), p - L_(x, y, *bad)))
     assert worst_good <= bound_lo**2 and worst_bad > bound_lo**2
+    def within_bound(corners):
+        worst_ = mpq(0)
+        for i in range(9):
+            for j in range(9):
+                x, y = al + h * mpq(i, 8), ze + k * mpq(j, 8)
+                p = np.array(S.evaluate(x, y), dtype=object)
+                worst_ = max(worst_, sf.dot(p - L_(x, y, *corners), p - L_(x, y, *corners)))
+        return None if worst_ <= bound_lo**2 else f"max |S - L|^2 = {float(worst_):.3g} > bound^2 = {float(bound_lo**2):.3g}"
     return reconstructed(
         printed="r(alpha,beta) r(zeta,beta) r(alpha,eta) and r(zeta,eta) r(alpha,eta) r(zeta,beta)",
         corrected="r(alpha,zeta) r(beta,zeta) r(alpha,eta) and r(beta,eta) r(alpha,eta) r(beta,zeta) (the corners of [alpha,beta] x [zeta,eta])",
         detail="the printed arguments mix the s- and t-interval ends; with the corner triangles the bound (1/8)(M1 h^2 + 2 M2 h k + M3 k^2) "
         "holds on a 9x9 exact sample of a random bicubic (sub-domain 1/20 x 1/20), with the printed labels it fails",
+        printed_form=bad, corrected_form=good, check=L.predicate(within_bound), reference='exact',
     )
 
 
@@ -229,11 +258,16 @@ def example_hodographs():
     tt = [[6 * (Z[i, j + 2] - 2 * Z[i, j + 1] + Z[i, j]) for i in range(4)] for j in range(1, -1, -1)]
     assert ss == _PSS and st == _PST and tt == _PTT
     assert sf.surface_second_derivative_bounds(S) == (48**2, 36**2, 36**2)
+    def reproduces_printed_hodographs(z):
+        Z_ = np.array(z, dtype=object)
+        ss_ = [[6 * (Z_[i + 2, j] - 2 * Z_[i + 1, j] + Z_[i, j]) for i in range(2)] for j in range(3, -1, -1)]
+        return None if ss_ == _PSS else "the printed P_ss array is not reproduced"
     return reconstructed(
         printed="control grid of Figure 15.5 (lost)",
         corrected=f"z = {_Z} on the lattice x = i, y = j (unique up to an added bilinear-free affine function)",
         detail="the three printed hodograph arrays are mutually consistent (layout of (15.3): rows are t from top); "
         "this net reproduces all 25 entries exactly and gives M1 = 48, M2 = 36, M3 = 36 as printed",
+        printed_form=L.LOST, lost_reason='Figure 15.5 (the control grid) is lost', corrected_form=_Z, check=L.predicate(reproduces_printed_hodographs), reference='exact',
     )
 
 
@@ -249,11 +283,15 @@ def example_sampling():
     assert abs(sp.N(dt, 30) - sp.Float("0.0077165", 30)) < 1e-7 and abs(sp.N(ds, 30) - sp.Float("0.0066827", 30)) < 1e-7
     assert (res.n_s, res.n_t) == (150, 130) and res.case == 3 and res.bound_holds
     assert int(sp.ceiling(1 / ds)) == 150 and int(sp.ceiling(1 / dt)) == 130
+    def step(dt_):
+        ref_ = sp.sqrt(sp.Rational(8, 1000) / (48 * k**2 + 2 * 36 * k + 36))
+        return None if abs(sp.N(ref_ - dt_, 30)) < 1e-7 else f"delta_t = sqrt(0.008/(72 + 36 sqrt 3)) = {sp.N(ref_, 8)}, not {dt_}"
     return erratum(
         printed="delta_t = 0.0080677, delta_s = .0069861, n_s = 144, n_t = 124",
         corrected="delta_t = sqrt(0.008/(72 + 36 sqrt 3)) = 0.0077165..., delta_s = 0.0066827..., n_s = 150, n_t = 130",
         detail="48 k^2 + 72 k + 36 = 72 + 36 sqrt(3) = 134.35 with k = sqrt(3)/2; the printed delta_t corresponds to a denominator "
         "of about 122.9. Ceilings certified by exact rational enclosures; the final (150, 130) sampling meets the bound",
+        printed_form=sp.Float('0.0080677', 30), corrected_form=sp.Float('0.0077165', 30), check=L.predicate(step),
     )
 
 
@@ -348,11 +386,17 @@ def tspline_b10():
     c = bx.basis_function([0, 1, 3, 5, 6], 4)
     assert b * c == mpq(253, 1440) and a * c != mpq(253, 1440)
     assert bx.basis_function([-2, -1, 0, 1, 2], 3) == 0  # B_4(3,4) = N[s0,s1,0,1,2](3) * ... = 0 for any phantoms
+    def product_value(vec):
+        T_ = sp.Symbol("T_")
+        n1 = sp.bspline_basis(3, tuple(sp.Integer(v) for v in vec), 0, T_).subs(T_, 3)
+        n2 = sp.bspline_basis(3, (0, 1, 3, 5, 6), 0, T_).subs(T_, 4)
+        return None if n1 * n2 == sp.Rational(253, 1440) else f"N{list(vec)}(3) N[0,1,3,5,6](4) = {n1 * n2} (sympy bspline_basis)"
     return erratum(
         printed="B_10(3,4) = N[0,1,2,5,7](3) N[0,1,3,5,6](4) = 253/1440",
         corrected=f"N[0,1,2,5,7](3) N[0,1,3,5,6](4) = {a * c}; 253/1440 = N[0,1,2,4,5](3) N[0,1,3,5,6](4) (the vector the worked steps use)",
         detail=f"N[0,1,2,5,7](3) = {a}, N[0,1,2,4,5](3) = 11/24, N[0,1,3,5,6](4) = 23/60; the stated s-knot vector and the one "
         "computed with disagree (Figure 15.17 is lost, so which one the mesh dictates cannot be decided). B_4(3,4) = 0 verified",
+        printed_form=(0, 1, 2, 5, 7), corrected_form=(0, 1, 2, 4, 5), check=L.predicate(product_value), reference='sympy',
     )
 
 
@@ -372,7 +416,7 @@ def refinement_equations():
             assert (c, d) == (expected_c, expected_d)
             for j in range(12):
                 x = kv[0] + (kv[4] - kv[0]) * mpq(j, 11)
-                assert bx.basis_function(kv, x) == c * bx.basis_function(left, x) + d * bx.basis_function(right, x)
+                assert _sympy_N(kv, x) == _sympy_N([0] * 0 + list(left), x) * c + d * _sympy_N(list(right), x)
         assert bx.refine_basis_function(kv, kv[0] - 1) == [(1, tuple(kv))]
     return verified_range("random cubic knot vectors, all four positions", "the printed c_i, d_i and the identity, exactly at 12 points")
 
@@ -414,11 +458,15 @@ def local_refinement():
     full = M.refine([(c, r) for c in range(7) for r in range(6)])
     a, b = full.to_bspline(), M.to_bspline()
     assert len(full.points) == 42 and (a.S, a.T) == (b.S, b.T) and np.all(a.hom == b.hom)
+    def new_points(pts_):
+        got = sorted(set(M.refine([(3, 2)]).points) - set(M.points))
+        return None if got == sorted(pts_) else f"refinement adds {got}"
     return reconstructed(
         printed="Figure 15.20 (T-mesh lost): P2 at (s3, t2) forces P3 at (s3, t3)",
         corrected="mesh rebuilt from the text: column s3 stops below t2 and above t3, row t3 ends in a T-junction at s2",
         detail="the topology phase finds exactly P3 (violation 2 of the blending function centred at P2), the geometry phase "
         "reproduces the surface exactly; refining at every node yields the tensor B-spline of 15.7.6",
+        printed_form=L.LOST, lost_reason='Figure 15.20 (the T-mesh) is lost', corrected_form=[(3, 2), (3, 3)], check=L.predicate(new_points), reference='independent-algorithm',
     )
 
 
@@ -606,10 +654,13 @@ def triangular_corner():
         res = cv.triangular_corner_curvature(tri)
         K, H2, sg = _curvature_from(_derivs(_tri_poly_form(tri, n, pts, ws), (0, 0)))
         assert (_R(res.gaussian), _R(res.mean_squared), res.mean_sign) == (K, H2, sg)
+    def matches_sympy_curvature(gaussian):
+        return None if _R(gaussian) == K else f"K = {gaussian}, sympy (from the derivatives of the patch) {K}"
     return reconstructed(
         printed="(15.60) K_m = (n-1)/n w_00n / [w_10^2 w_01^2 / (w_01^2 b^2 w_20 h20 - 2 w_10 w_01 (a.b) w_11 h11 + w_10^2 a^2 w_02 h02)] (fraction bars damaged)",
         corrected="K_m = (n-1)/n w_00n/(w_10^2 w_01^2) (w_01^2 |b|^2 w_20 h20 - 2 w_10 w_01 (a.b) w_11 h11 + w_10^2 |a|^2 w_02 h02)/(2 |a x b|^2)",
         detail="(15.55) with m = n and w11bar h11bar = (n-1)/n w11 h11; (15.59) and the reconstruction agree with sympy for n = 2, 3",
+        printed_form=L.LOST, lost_reason='the fraction bars of (15.60) are damaged in the extraction', corrected_form=res.gaussian, check=L.predicate(matches_sympy_curvature), reference='sympy',
     )
 
 

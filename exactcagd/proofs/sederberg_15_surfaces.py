@@ -16,6 +16,7 @@ from gmpy2 import mpq
 
 from exactcagd import BezierCurve, BezierSurface, BSplineCurve, BSplineSurface
 from exactcagd.exact import bernstein as bz
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified
 from exactcagd.proofs._sederberg_common import Rs, rand_pos, rand_q, rng, s_, t_
 
@@ -99,10 +100,18 @@ def control_curve_definition():
     for j in range(4):
         assert BezierCurve([net[i][j] for i in range(3)]).evaluate(c) == beads[j]
     assert len(beads) == 4 != 3  # n + 1 beads, but only m + 1 = 3 curves of the printed kind
+    def beads_on_curves(axis):
+        # the bead Q_j(c) must lie on the j-th s-control curve: the curve through P_ij with i running (axis 'i')
+        for j in range(4):
+            pts_ = [net[i][j] for i in range(3)] if axis == "i" else [net[min(j, 2)][k] for k in range(4)]
+            if BezierCurve(pts_).evaluate(c) != beads[j]:
+                return f"bead Q_{j}(c) is not on the curve P_ij, {'j' if axis == 'j' else 'i'} = 0.. (n + 1 beads, m + 1 such curves)"
+        return None
     return erratum(
         printed="the curve defined by P_ij, j = 0..n is the i-th s-control curve (m+1 of them); P_ij, i = 0..m the j-th t-control curve",
         corrected="the s-control curves (along which the n+1 beads Q_j(c) slide, and which are split to subdivide at s = sigma) are P_ij, i = 0..m, one for each j (n+1 of them)",
         detail="Q_j(c) = sum_i P_ij B_i^m(c) is a point of the curve with control points P_0j..P_mj; exactcagd iso_u(c) control points equal these beads",
+        printed_form='j', corrected_form='i', check=L.predicate(beads_on_curves),
     )
 
 
@@ -118,10 +127,16 @@ def boundary_curves():
     assert ps1.control_points == tuple(tuple(mpq(x) for x in net[i][3]) for i in range(3))  # P_03, P_13, P_23
     ref = _surface_exprs(net)
     assert all(sp.expand(e.subs(s_, 0) - f) == 0 for e, f in zip(ref, [sp.expand(x) for x in p0t.to_sympy(t_)]))
+    def is_boundary_p0t(idx):
+        if any(i >= len(net) or j >= len(net[0]) for i, j in idx):
+            return f"P_{idx} is not a control net of the 2 x 3 patch (no row i = 3): the subscripts are transposed"
+        pts_ = [tuple(mpq(x_) for x_ in net[i][j]) for i, j in idx]
+        return None if tuple(pts_) == p0t.control_points and all(sp.expand(e.subs(s_, 0) - f_) == 0 for e, f_ in zip(ref, [sp.expand(x_) for x_ in BezierCurve([list(p_) for p_ in pts_]).to_sympy(t_)])) else f"P_{idx} are not the control points of P(0, t) (sympy P(0, t))"
     return erratum(
         printed="P(0,t): P_00, P_10, P_20, P_30;  P(s,1): P_30, P_31, P_32",
         corrected="P(0,t): P_00, P_01, P_02, P_03;  P(s,1): P_03, P_13, P_23 (first index = s, as in (15.2), (15.3))",
         detail="the printed subscripts are transposed; exactcagd boundary curves of a 2 x 3 patch have the corrected control points and agree with sympy",
+        printed_form=[(0, 0), (1, 0), (2, 0), (3, 0)], corrected_form=[(0, 0), (0, 1), (0, 2), (0, 3)], check=L.predicate(is_boundary_p0t),
     )
 
 
@@ -141,10 +156,13 @@ def surface_subdivision_example():
     got = _surface_exprs([[list(p) for p in row] for row in poly.subdivide_v("1/2")[1].control_net])
     for a, b in zip(got, ref):
         assert sp.expand(a - b.subs(t_, (1 + t_) / 2)) == 0
+    def is_other_half(srange):
+        return None if high == surf.reparametrize(srange, ("1/2", 1)) else f"the upper half of the split at t = 1/2 is not P_{srange} x [1/2, 1]"
     return erratum(
         printed="P_[0,1/2] x [1/2,1]",
         corrected="P_[0,1] x [1/2,1] (the other half of the split at t = 1/2)",
         detail="exactcagd subdivide_v(1/2) then subdivide_u(1/2) gives the [0,1/2]^2 patch (== reparametrize); the upper half covers s in [0,1]",
+        printed_form=(0, '1/2'), corrected_form=(0, 1), check=L.predicate(is_other_half), reference='exact',
     )
 
 

@@ -16,6 +16,7 @@ from exactcagd.exact import bernstein as bz
 from exactcagd.geometry.bezier_curve import BezierCurve
 from exactcagd.geometry.bezier_surface import BezierSurface
 from exactcagd.toolbox import surfaces as sf
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified_range
 
 T, U, V = sp.symbols("t u v")
@@ -166,12 +167,20 @@ def horner_exponents():
                 assert np.any(lhs != printed[(k, l)])
     total = sum(printed.values(), start=H[0, 0] * 0) * (1 - s) ** m * (1 - t) ** n
     assert np.all(total == ev(H))
+    def identity_holds(shifted):
+        for (k, l), pr in printed.items():
+            lhs = ev(H[k : k + m, l : l + n]) / ((1 - s) ** (m - 1) * (1 - t) ** (n - 1))
+            rhs = pr / (u**k * v**l) if shifted else pr
+            if not np.all(lhs == rhs):
+                return f"(k, l) = ({k}, {l}): P^kl/((1-s)^(m-1)(1-t)^(n-1)) differs from the sum by the factor u^k v^l"
+        return None
     return erratum(
         printed="exponents u^i v^j with i from k, j from l",
         corrected="u^{i-k} v^{j-l}; equivalently the printed sums equal s^k t^l P^{kl} / ((1-s)^m (1-t)^n), so that "
         "P(s,t) = (1-s)^m (1-t)^n (P^^00 + P^^10 + P^^01 + P^^11) with the printed sums",
         detail="the identity as printed is off by u^k v^l for (k,l) != (0,0) (exact check on a rational (3,2) patch); the "
         "projections Pi(P^^kl) are unaffected, the mixed combinations of (15.41)-(15.42) need the corrected scaling",
+        printed_form=False, corrected_form=True, check=L.predicate(identity_holds), reference='exact',
     )
 
 

@@ -27,6 +27,7 @@ from exactcagd.algebra import (
 )
 from exactcagd.algebra.resultants import bezout_sign, echelon_bareiss
 from exactcagd.algebra.traces import trace_bezout
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -109,7 +110,12 @@ def linear_common_root_sign():
     printed_holds = sp.Rational(-a0, a1) == sp.Rational(b0, b1)
     corrected_holds = sp.Rational(-a0, a1) == sp.Rational(-b0, b1)
     assert not printed_holds and corrected_holds
-    return erratum("-a0/a1 = b0/b1", "-a0/a1 = -b0/b1", "sign lost; f = t - 2, g = 3t - 6 share t = 2 but violate the printed equality")
+    def condition_holds(cond):
+        # f = t - 2, g = 3t - 6 share the root t = 2: the condition must hold for them
+        return None if cond(a0, a1, b0, b1) else "f = t - 2, g = 3t - 6 share t = 2 but the condition fails"
+    return erratum("-a0/a1 = b0/b1", "-a0/a1 = -b0/b1", "sign lost; f = t - 2, g = 3t - 6 share t = 2 but violate the printed equality",
+        printed_form=lambda a0_, a1_, b0_, b1_: sp.Rational(-a0_, a1_) == sp.Rational(b0_, b1_), corrected_form=lambda a0_, a1_, b0_, b1_: sp.Rational(-a0_, a1_) == sp.Rational(-b0_, b1_), check=L.predicate(condition_holds),
+    )
 
 
 @claim(DOC, "17.3.3", "(17.6), (17.7)", "h1 = a2 g - b2 f = (a2b1) t + (a2b0); h2 = (a2 t + a1) g - (b2 t + b1) f = (a2b0) t + (a1b0)")
@@ -123,10 +129,15 @@ def degree_two_auxiliary():
     ab = lambda i, j: A[i] * B[j] - A[j] * B[i]  # noqa: E731
     assert sp.expand(a2 * g - b2 * f - (ab(2, 1) * t + ab(2, 0))) == 0
     assert sp.expand((a2 * t + a1) * g - (b2 * t + b1) * f - (ab(2, 0) * t + ab(1, 0))) == 0
+    t2, t1, t0 = sp.symbols("T2 T1 T0")
+    def h1_coefficients(form):
+        ref = ab(2, 1) * t + ab(2, 0)
+        return L.same_expr(sp.expand(a2 * g - b2 * f))(form)
     return reconstructed(
         "h1 = (2, 1)t + (2, 0)",
         "h1 = (a2b1) t + (a2b0)",
         "the extraction dropped the a/b letters in (17.6); both identities expand exactly (sympy)",
+        printed_form=L.LOST, lost_reason='the letters of the brackets (a2b1), (a2b0) are lost: (2, 1)t + (2, 0)', corrected_form=ab(2, 1) * t + ab(2, 0), check=L.predicate(h1_coefficients),
     )
 
 
@@ -239,10 +250,14 @@ def gauss_example_1():
     assert E == sp.Matrix([[7, -7, 2], [0, -84, -63], [0, 0, -1611]])
     ours, rank = echelon_bareiss([[7, -7, 2], [-7, -5, -11], [2, -11, 13]])
     assert [list(r) for r in ours] == [[7, -7, 2], [0, -84, -63], [0, 0, -1611]] and rank == 3
+    def row_two(row):
+        ref = list(E.row(1))
+        return None if list(row) == ref else f"row 2 = {list(row)}, integer-preserving elimination (sympy) gives {ref}"
     return erratum(
         "row 2 = (0, -84, 0)",
         "row 2 = (0, -84, -63)",
         "7*(-11) - (-7)*2 = -63; the corner -1611 (the determinant) is right",
+        printed_form=(0, -84, 0), corrected_form=(0, -84, -63), check=L.predicate(row_two),
     )
 
 
@@ -293,6 +308,7 @@ def euclid_example_1():
         "step 3 remainder 179/16; step 4 quotient (192t + 144)/1253",
         "1253 = 7 * 179: the printed remainder is 7 times too large (step 2's line also prints the divisor as dividend); "
         "the gcd is still a constant: no common root",
+        printed_form=sp.Rational(1253, 16), corrected_form=sp.Rational(179, 16), check=L.same_value(r3),
     )
 
 
@@ -305,10 +321,13 @@ def euclid_example_2():
     assert q1 == 2 and sp.expand(r1 - (-5 * t**2 + 17 * t + 12)) == 0
     assert sp.expand(r2 - (-11 * t + 44) / 25) == 0 and sp.expand(q2 - (-t / 5 - sp.Rational(12, 25))) == 0
     assert sp.expand(q3 - (125 * t + 75) / 11) == 0 and r3 == 0
+    def quotients(qs):
+        return None if sp.expand(qs[0] - q2) == 0 and sp.expand(qs[1] - q3) == 0 else f"sympy division gives {q2} and {q3}"
     return erratum(
         "quotients -5t - 12/25 and 125t + 75/11",
         "quotients -t/5 - 12/25 and (125t + 75)/11",
         "exact polynomial division (sympy); remainders and the common root t = 4 are right",
+        printed_form=(-5 * t - sp.Rational(12, 25), 125 * t + sp.Rational(75, 11)), corrected_form=(-t / 5 - sp.Rational(12, 25), (125 * t + 75) / 11), check=L.predicate(quotients),
     )
 
 

@@ -15,6 +15,7 @@ import sympy as sp
 from exactcagd import BezierSurface
 from exactcagd.algebra import SurfaceParametrization, base_point_count, groebner, ideal_contains, ideals_equal, implicitize_surface
 from exactcagd.algebra.groebner import groebner_basis
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -101,7 +102,11 @@ def sphere_base_points():
     assert base_point_count(P) == 2
     F = implicitize_surface(P)
     assert F.as_expr() == x**2 + y**2 + z**2 - 9 and F.total_degree() == 4 - 2
-    return reconstructed("x = 2rs^u", "x = 2rsu", "with x = 2rsu the parametrization satisfies x^2 + y^2 + z^2 = r^2 w^2; exactly two base points (1, +-i, 0); degree 4 - 2 = 2")
+    def on_sphere(X_):
+        return L.same_expr(0)(sp.expand(X_**2 + Y**2 + Z**2 - r_**2 * W**2))
+    return reconstructed("x = 2rs^u", "x = 2rsu", "with x = 2rsu the parametrization satisfies x^2 + y^2 + z^2 = r^2 w^2; exactly two base points (1, +-i, 0); degree 4 - 2 = 2",
+        printed_form=2 * r_ * s**u, corrected_form=2 * r_ * s * u, check=L.predicate(on_sphere),
+    )
 
 
 @claim(DOC, "17.10", "degree drop", "with r base points the implicit degree is n^2 - r")
@@ -164,10 +169,14 @@ def univariate_ideal():
     assert [p.as_expr() for p in groebner([f, g], [t])] == [1]
     f1 = t**4 - 3 * t**3 + 4 * t**2 - t - 1
     assert sp.gcd(f1, g) == t - 1
+    def generated_ideal(gen):
+        basis = [p.as_expr() for p in groebner([f, g], [t])]
+        return None if basis == [gen] else f"the Groebner basis of the printed pair is {basis}"
     return erratum(
         "<t^4 - 3t^3 + 4t^2 - t - 4, t^6 - 4t^3 + 3> = <t - 1>",
         "the printed ideal is <1> (gcd 1, empty variety: f(1) = -3); with constant -1, <t^4 - 3t^3 + 4t^2 - t - 1, t^6 - 4t^3 + 3> = <t - 1>",
         "Euclid's algorithm (sympy gcd) and the Gröbner basis [1]",
+        printed_form=t - 1, corrected_form=sp.Integer(1), check=L.predicate(generated_ideal),
     )
 
 

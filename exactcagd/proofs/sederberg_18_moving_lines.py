@@ -18,6 +18,8 @@ from exactcagd.algebra import double_point_cubic, double_points_quartic, implici
 from exactcagd.algebra.moving_lines import MovingLine, _lines_of_degree, cross, homogeneous_control_points, moving_line_following
 from exactcagd.algebra._poly import curve_power
 from exactcagd.algebra.traces import trace_zeroing
+from exactcagd.proofs import _ledger as L
+from exactcagd.proofs._ledger import predicate as _ledger_predicate
 from exactcagd.proofs._ledger import claim, erratum, not_checkable, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -136,7 +138,13 @@ def two_pencils_implicit():
     # the printed first equation (L00, L10) does not contain the point P[t] in general
     bad = (Lxy["00"] * (1 - t) + Lxy["10"] * t).subs({x: P[0] / P[2], y: P[1] / P[2]}, simultaneous=True)
     assert sp.simplify(bad) != 0
-    return erratum("L00 (1 - t) + L10 t = 0", "L00 (1 - t) + L01 t = 0", "consistent with (18.30); the implicit equation (18.31) vanishes on L0[t] x L1[t] (random pencils)")
+    def contains_point(pair):
+        la, lb = pair
+        e = (Lxy[la] * (1 - t) + Lxy[lb] * t).subs({x: P[0] / P[2], y: P[1] / P[2]}, simultaneous=True)
+        return None if sp.simplify(e) == 0 else f"L{la}(1-t) + L{lb} t does not vanish at P[t] (random pencils)"
+    return erratum("L00 (1 - t) + L10 t = 0", "L00 (1 - t) + L01 t = 0", "consistent with (18.30); the implicit equation (18.31) vanishes on L0[t] x L1[t] (random pencils)",
+        printed_form=('00', '10'), corrected_form=('00', '01'), check=L.predicate(contains_point),
+    )
 
 
 @claim(DOC, "18.2.3", "(18.33)-(18.35)", "P[k] x P[t] = (t - k) {1-k, k} [[2 P0xP1, P0xP2],[P0xP2, 2 P1xP2]] {1-t, t}; k = 0, 1 give the two pencils")
@@ -239,10 +247,23 @@ def general_axial_identity():
         # the printed sum without the restriction l <= min(i, j) is identically zero (terms cancel in pairs)
         printed = sum((sp.binomial(n, l) * sp.binomial(n, 1 - l) * Pm[l].cross(Pm[1 - l]) for l in range(2)), sp.zeros(3, 1))
         assert printed == sp.zeros(3, 1) and _V(M[0][0]) != sp.zeros(3, 1)
+    def factorization(restricted):
+        n_ = 3
+        P_ = _rand_hom(random.Random(18581), n_)
+        Pm_ = [sp.Matrix(p) for p in P_]
+        def Lij(i, j):
+            return sum((sp.binomial(n_, l) * sp.binomial(n_, i + j + 1 - l) * Pm_[l].cross(Pm_[i + j + 1 - l])
+                        for l in range(0, min(i, j) + 1 if restricted else i + j + 2) if 0 <= i + j + 1 - l <= n_ and l <= n_), sp.zeros(3, 1))
+        left = [(1 - tau) ** (n_ - 1 - i) * tau**i for i in range(n_)]
+        right = [(1 - t) ** (n_ - 1 - j) * t**j for j in range(n_)]
+        rhs = (t - tau) * sum((left[i] * right[j] * Lij(i, j) for i in range(n_) for j in range(n_)), sp.zeros(3, 1))
+        ok = (_bern(P_, tau).cross(_bern(P_, t)) - rhs).applyfunc(sp.expand) == sp.zeros(3, 1)
+        return None if ok else "P(tau) x P(t) != (t - tau) sum L_ij (1-tau)^.. tau^i (1-t)^.. t^j (random cubic)"
     return reconstructed(
         "L_ij = sum_{l+m=i+j+1} C(n,l) C(n,m) P_l x P_m",
         "L_ij = sum_{l+m=i+j+1, l <= min(i,j)} C(n,l) C(n,m) P_l x P_m",
         "the unrestricted sum vanishes (P_l x P_m = -P_m x P_l); with l <= min(i, j) (as in 17.6) the factorization holds symbolically for n = 2..5",
+        printed_form=False, corrected_form=True, check=L.predicate(factorization),
     )
 
 
@@ -282,11 +303,20 @@ def quartic_matrix():
     diffs = [(i, j) for i in range(4) for j in range(4) if M[i][j] != printed[i][j]]
     assert diffs == [(0, 3), (1, 3)] and M[0][3] == (0, 2, 0) and M[1][3] == (4, 8, -8)
     assert all(M[i][j] == M[j][i] for i in range(4) for j in range(4))
+    P_ = homogeneous_control_points(QUARTIC)
+    def axial_identity(mat):
+        n_ = 4
+        left = [(1 - tau) ** (n_ - 1 - i) * tau**i for i in range(n_)]
+        right = [(1 - t) ** (n_ - 1 - j) * t**j for j in range(n_)]
+        rhs = (t - tau) * sum((left[i] * right[j] * sp.Matrix(mat[i][j]) for i in range(n_) for j in range(n_)), sp.zeros(3, 1))
+        diff = (_bern(P_, tau).cross(_bern(P_, t)) - rhs).applyfunc(sp.expand)
+        return None if diff == sp.zeros(3, 1) else f"P(tau) x P(t) - (t - tau) sum L_ij ... = {list(diff)[:1]}..."
     return erratum(
         "entries (row 0, col 3) = (0, 3, 0) and (row 1, col 3) = (3, 9, -9)",
         "(0, 2, 0) and (4, 8, -8) (the matrix is symmetric; rows 3 are printed correctly)",
         "control points reconstructed from the printed entries: (0,0), (0,1), (1,2), (3,2), (2,0), weights 1; "
         "the printed (3, 9, -9) is the cubic example's entry",
+        printed_form=printed, corrected_form=M, check=L.predicate(axial_identity),
     )
 
 
@@ -327,10 +357,13 @@ def quartic_double_points():
     assert n_complex == 0 and len(pts) == 3 and (str(pts[2][0]), str(pts[2][1])) == ("2", "0")
     for px, py in pts[:2]:
         assert str(px) == "1" and [int(c) for c in py.poly.coeffs()] == [-2, 0, 1]
+    def axis_at_zero(factor_):
+        return None if axis.subs(tau, 0) == factor_ * sp.Matrix([2, 0, 1]) else f"L_Q0 x L_Q1 at tau = 0 is {list(axis.subs(tau, 0))}"
     return erratum(
         "axes -1 (2, 0, 1) and (-12 -+ 8 sqrt 2)(1, -+sqrt 2, 1)",
         "-8 (2, 0, 1) and 8 (-12 -+ 8 sqrt 2)(1, -+sqrt 2, 1)",
         "the scale factors are 8x the printed ones (the points (2, 0), (1, +-sqrt 2) are right); the printed cubic is 1/16 of the triple product (same roots)",
+        printed_form=-1, corrected_form=-8, check=L.predicate(axis_at_zero),
     )
 
 
@@ -358,11 +391,16 @@ def quartic_triple_point():
     assert sp.Matrix([-2, -3, 0]).cross(sp.Matrix([-4, 0, 12])) == -12 * sp.Matrix([3, -2, 1])
     p, q = mu_basis(QUARTIC_TRIPLE)
     assert (p.degree, q.degree) == (1, 3) and p.axis() == (3, -2)
+    def follows_curve(mid):
+        pen = basis[1] * sp.Matrix(mid) + basis[2] * sp.Matrix([-4, 0, 12])
+        val = sp.factor(sp.expand(pen.dot(Pt)))
+        return None if val == 0 else f"L.P = {val}"
     return erratum(
         "pencil (0,0,0), (2,3,0), (-4,0,12); (2,3,0) x (-4,0,12) = 12 (3,-2,1)",
         "pencil (0,0,0), (-2,-3,0), (-4,0,12) (= row 2 - 4 row 1 of (18.75)); axis -12 (3,-2,1)",
         "the printed pencil does not follow the curve (L.P = 24 t^2 (t-1)^2 (t+1)^2); the corrected one does; the triple point (3, -2) is right. "
         "Control points (0,0),(0,1),(1,2),(3,2),(3,-2) reproduce (18.74); (18.75) lines follow the curve and L1 x L2 = 0; mu = 1",
+        printed_form=(2, 3, 0), corrected_form=(-2, -3, 0), check=_ledger_predicate(follows_curve),
     )
 
 
@@ -397,10 +435,13 @@ def quartic_moving_line_implicit():
     F = y**4 + 4 * x**3 + 2 * x * y**2 - 16 * x**2 - 6 * y**2 + 16 * x
     assert sp.expand(M.det() - 512 * F) == 0
     assert implicitize(QUARTIC, "moving_lines").as_expr() == sp.expand(F)
+    def resultant_is_512F(mat):
+        return L.same_expr(512 * F)(sp.expand(sp.Matrix(mat).det()))
     return reconstructed(
         "first line of (18.87): a product of 2 x 2 determinants",
         "the 2 x 2 matrix of brackets |a_i b_j| (Bezout in the basis (1-t)^2, (1-t)t, t^2)",
         "the extraction damaged the first line; the printed matrix and 512 F are exact (sympy); implicitize(moving_lines) = F",
+        printed_form=L.LOST, lost_reason='the first line of (18.87) is damaged (a product of 2 x 2 determinants)', corrected_form=M, check=L.predicate(resultant_is_512F),
     )
 
 

@@ -14,6 +14,7 @@ import sympy as sp
 from exactcagd import BezierCurve
 from exactcagd.algebra import cusp_parameters, double_points, scaled_hodograph, tangent_control_lines, tangent_moving_line
 from exactcagd.algebra.dual import inflection_polynomial
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -152,8 +153,18 @@ def scaled_hodograph_claim():
         assert sp.simplify(d[0] * h[1] - d[1] * h[0]) == 0
         if not rational:
             assert (h - d).applyfunc(sp.expand) == sp.zeros(2, 1)
+    def is_parallel_to_derivative(with_basis):
+        c_ = _rand_curve(random.Random(18105), 3, False)
+        H_ = scaled_hodograph(c_)
+        P_ = _bern(_hom(c_))
+        d_ = sp.Matrix([sp.diff(P_[0] / P_[2], t), sp.diff(P_[1] / P_[2], t)])
+        pts = [sp.Matrix([sp.Rational(str(p[0])), sp.Rational(str(p[1]))]) for p in H_.control_points]
+        nn = len(pts) - 1
+        h_ = sum(((sp.binomial(nn, i) * t**i * (1 - t) ** (nn - i) if with_basis else 1) * pts[i] for i in range(nn + 1)), sp.zeros(2, 1))
+        return None if (h_ - d_).applyfunc(sp.expand) == sp.zeros(2, 1) else "sum P_Hi without the Bernstein functions is a constant, not P'(t)"
     return reconstructed(
         "L_H[t] = sum L_Hi; P_H[t] = sum P_Hi",
         "L_H[t] = sum B_i^(2n-2)(t) L_Hi; P_H[t] = sum B_i^(2n-2)(t) P_Hi",
         "the Bernstein basis functions were lost; P_H is parallel to P' (random rational cubic) and equals P' for a polynomial cubic",
+        printed_form=False, corrected_form=True, check=L.predicate(is_parallel_to_derivative),
     )

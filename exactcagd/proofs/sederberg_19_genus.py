@@ -29,6 +29,7 @@ from exactcagd.algebra import (
 )
 from exactcagd.algebra.parametrize import translate
 from exactcagd.algebra.resultants import sylvester_matrix
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -135,10 +136,14 @@ def euclid_pairing():
     assert sp.expand(h - (sp.Rational(16, 9) - y**2)) == 0
     assert sp.expand(cc - (6 * y**2 - 15 * y + sp.Rational(28, 3))) == 0
     assert sp.gcd(h, cc) == y - sp.Rational(4, 3) or sp.expand(sp.gcd(h, cc) * 3 - (3 * y - 4)) == 0
+    def substitutions(pair):
+        hyper_, circle_ = pair
+        return None if sp.expand(h - hyper_) == 0 and sp.expand(cc - circle_) == 0 else f"at x = 5/3 the hyperbola gives {h}, the circle {cc}"
     return erratum(
         "circle -> 16/6 - y^2; hyperbola -> 6y^2 - 15y + 28/3",
         "hyperbola -> 16/9 - y^2; circle -> 6y^2 - 15y + 28/3",
         "the two curves are swapped and 16/6 should be 16/9 (25/9 - 1); the gcd 3y - 4 and the point (5/3, 4/3) are right",
+        printed_form=(6 * y**2 - 15 * y + sp.Rational(28, 3), sp.Rational(16, 6) - y**2), corrected_form=(sp.Rational(16, 9) - y**2, 6 * y**2 - 15 * y + sp.Rational(28, 3)), check=L.predicate(substitutions),
     )
 
 
@@ -148,7 +153,9 @@ def quadratic_discriminant():
     R = _sylvester_res(a * t**2 + b * t + c, 2 * a * t + b, t)
     assert sp.expand(R - (-a * (b**2 - 4 * a * c))) == 0
     assert sp.expand(R - a**2 * (b**2 - 4 * a * c)) != 0
-    return erratum("a^2 (b^2 - 4ac)", "-a (b^2 - 4ac)", "3 x 3 Sylvester determinant (sympy); it vanishes (a != 0) iff b^2 - 4ac = 0, as the notes conclude")
+    return erratum("a^2 (b^2 - 4ac)", "-a (b^2 - 4ac)", "3 x 3 Sylvester determinant (sympy); it vanishes (a != 0) iff b^2 - 4ac = 0, as the notes conclude",
+        printed_form=a**2 * (b**2 - 4 * a * c), corrected_form=-a * (b**2 - 4 * a * c), check=L.same_expr(R),
+    )
 
 
 @claim(DOC, "19.4", "curve discriminant", "Res_y(f, f_y) has roots at the x of vertical tangents and double points")
@@ -169,7 +176,11 @@ def parametrize_circle():
     X, Y = parametrize_unicursal(f, (0, 0))
     assert sp.simplify(X - 2 / (1 + t**2)) == 0 and sp.simplify(Y - 2 * t / (1 + t**2)) == 0
     assert sp.simplify(f.subs({x: X, y: Y}, simultaneous=True)) == 0
-    return erratum("centered at (0, 1)", "centered at (1, 0)", "x^2 - 2x + y^2 = (x - 1)^2 + y^2 - 1; the parametrization is right")
+    def centre(pt):
+        return L.same_expr(sp.expand(f))(sp.expand((x - pt[0]) ** 2 + (y - pt[1]) ** 2 - 1))
+    return erratum("centered at (0, 1)", "centered at (1, 0)", "x^2 - 2x + y^2 = (x - 1)^2 + y^2 - 1; the parametrization is right",
+        printed_form=(0, 1), corrected_form=(1, 0), check=L.predicate(centre),
+    )
 
 
 @claim(DOC, "19.5", "cubic through origin", "(x^3 + 2x^2y + 3xy^2 + 4y^3) + (5x^2 + 6xy + 7y^2): x = -(5 + 6t + 7t^2)/(1 + 2t + 3t^2 + 4t^3), y = tx")
@@ -210,10 +221,13 @@ def translate_and_parametrize():
     assert sp.simplify(_F195.subs({x: X, y: Y}, simultaneous=True)) == 0
     (PX, PY), point = parametrize_rational_cubic(_F195)
     assert point == (2, 3) and sp.simplify(PX - X) == 0 and sp.simplify(PY - Y) == 0
+    def gives_printed_g(subs_):
+        return L.same_expr(g)(sp.expand(_F195.subs(subs_, simultaneous=True)))
     return reconstructed(
         "making the substitution x = t + 2, y = t + 3",
         "making the substitution x -> x + 2, y -> y + 3",
         "with the corrected substitution every printed polynomial and the final parametrization are exact (sympy)",
+        printed_form={x: t + 2, y: t + 3}, corrected_form={x: x + 2, y: y + 3}, check=L.predicate(gives_printed_g),
     )
 
 

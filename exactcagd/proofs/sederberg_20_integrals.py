@@ -12,6 +12,7 @@ from gmpy2 import mpq
 
 from exactcagd import BezierCurve
 from exactcagd.toolbox import integrals as ig
+from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, not_checkable, verified, verified_range
 
 t = sp.Symbol("t")
@@ -113,10 +114,23 @@ def d_coefficients():
     D3 = ig.d3_coefficients(n)
     assert all(_q(D3[i, j, k]) == C3(i, j, k - 1) - C3(i, j, k) for i in range(3) for j in range(3) for k in range(3))
     printed01 = sp.Rational(1 - 0, (0 + 1) * (2 - 0 - 1))  # n = 1, (i, j) = (0, 1)
+    def d_formula(extra):
+        for n_ in (1, 2, 3):
+            Cc = lambda i, j: _pint(_B(n_, i) * _B(n_ - 1, j)) if 0 <= j <= n_ - 1 else 0  # noqa: E731
+            for i in range(n_ + 1):
+                for j in range(n_ + 1):
+                    if i + j in (0, 2 * n_):
+                        continue
+                    val = sp.Rational(j - i, (i + j) * (2 * n_ - i - j)) * sp.binomial(n_, i) * sp.binomial(n_, j) / extra(n_, i + j)
+                    if val != Cc(i, j - 1) - Cc(i, j):
+                        return f"n = {n_}, D_{i}{j} = {val}, integral definition gives {Cc(i, j - 1) - Cc(i, j)}"
+        return None
     return erratum(printed="D_ij = (j-i)/((i+j)(2n-i-j)) C(n,i) C(n,j);  D_ijk = (2k-i-j)/((i+j+k)(3n-i-j-k)) C(n,i) C(n,j) C(n,k)",
                    corrected="D_ij = (j-i)/((i+j)(2n-i-j)) C(n,i) C(n,j) / C(2n,i+j);  D_ijk = ... / C(3n,i+j+k)",
                    detail=f"from the definitions D = C_{{.,j-1}} - C_{{.,j}} (sympy integrals, n = 1..4 and n = 2): e.g. n = 1: D_01 = 1/2, printed {printed01}; "
-                          "the corner values -1/(2n), 1/(2n), -1/(3n), 1/(3n) are right")
+                          "the corner values -1/(2n), 1/(2n), -1/(3n), 1/(3n) are right",
+        printed_form=lambda n_, s_: 1, corrected_form=lambda n_, s_: sp.binomial(2 * n_, s_), check=L.predicate(d_formula), reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="20.2", ref="(20.13)-(20.18)", statement="Area = n sum D_ij y_i x_j; directed sector area = n sum_{i<j} D_ij (P_i ^ P_j); I_x = n/2 sum D_ijk y_i y_j x_k; I_y = n sum D_ijk x_i y_j x_k; Volume = 2 pi I_x")
@@ -246,9 +260,20 @@ def simpson_degree():
             assert g.degree() == 0 and (W**k).degree() == reduced and num.degree() < reduced
             deg = k - 4  # the integrand's denominator is W^(k-4): degree (k-4) r, squared at each of the four steps
             assert deg * r * 2**4 == naive
+    def reduced_degree(deg):
+        r_ = 1
+        c_ = _random_rational(random.Random(2041), r_)
+        h_ = c_.homogeneous()
+        X_, Y_, W_ = (sp.Poly(sum(_q(h_[i, k]) * _B(r_, i) for i in range(r_ + 1)), t) for k in range(3))
+        num_, k_ = (X_.diff(t) * W_ - X_ * W_.diff(t)) * Y_, 3
+        for _ in range(4):
+            num_, k_ = num_.diff(t) * W_ - k_ * num_ * W_.diff(t), k_ + 1
+        return None if (W_**k_).degree() == deg(r_) and sp.gcd(num_, W_).degree() == 0 else f"denominator degree {(W_**k_).degree()} for r = 1, not {deg(r_)}"
     return erratum(printed="degree 48r (64r)", corrected="degree 7r (8r) in lowest terms",
                    detail="x'y = (X'W - XW')Y / W^3 and x'y^2 = ... / W^4, so the fourth derivatives have denominators W^7 and W^8; "
-                          "48r = 3r * 2^4 and 64r = 4r * 2^4 count the quotient rule with the denominator squared at each step (checked for r = 1, 2)")
+                          "48r = 3r * 2^4 and 64r = 4r * 2^4 count the quotient rule with the denominator squared at each step (checked for r = 1, 2)",
+        printed_form=lambda r_: 48 * r_, corrected_form=lambda r_: 7 * r_, check=L.predicate(reduced_degree),
+    )
 
 
 @claim(doc="sederberg", section="20.4", ref="Tables 20.1, 20.2", statement="execution times (ms) of hybrid, Simpson and trapezoid methods on a 65 Specmark workstation")

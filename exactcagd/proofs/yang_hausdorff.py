@@ -36,6 +36,7 @@ from exactcagd.curves_on_surfaces import approximate
 from exactcagd.curves_on_surfaces.hausdorff import hausdorff_bound, piece_bound
 from exactcagd.curves_on_surfaces.samples import analytic_surface, closed_domain_curve
 from exactcagd.curves_on_surfaces.surface_grid import SurfaceGrid
+from exactcagd.proofs import _ledger as LG
 from exactcagd.proofs._ledger import claim, not_checkable, reconstructed, verified_range
 
 
@@ -99,12 +100,17 @@ def box_one():
                 dist = np.hypot(p[0] - q[0], p[1] - q[1])
                 assert lhs <= L * dist * (1 + 1e-9) + 1e-12
                 worst = max(worst, lhs / (L * dist) if dist > 0 else 0)
+    def is_lipschitz_tolerance(formula):
+        # d must make |S(p) - S(q)| <= eps_D whenever |p - q| <= d: check d = formula(eps, L) against L from the sample above
+        eps_ = 1.0
+        return None if formula(eps_, 2.0) * 2.0 <= eps_ * (1 + 1e-12) else "the tolerance does not guarantee eps_D"
     return reconstructed(
         "Box I (not in the extracted text)",
         "d = eps_D / L with L^2 = max_B |S_u|^2 + max_B |S_v|^2 over a box B containing both domain curves, "
         "each max bounded by the convex hull of the exact derivative net (weights W^2 > 0) restricted to B",
         f"derivative nets equal the sympy partial derivatives at exact points (2 rational patches); the Lipschitz inequality holds on "
         f"{6 * 4 * 20} random pairs in random boxes of 6 random rational patches (largest ratio {worst:.3f} <= 1)",
+        printed_form=LG.LOST, lost_reason='Box I is not in the extracted text', corrected_form=lambda eps_, L_: eps_ / L_, check=LG.predicate(is_lipschitz_tolerance), reference='exact',
     )
 
 
