@@ -47,12 +47,19 @@ MAX_DEGREE = 40
 
 @dataclass(frozen=True)
 class Kind:
-    """A record kind: ``builders[family](rng, degrees) -> (input, answer)``."""
+    """A record kind: ``builders[family](rng, degrees) -> (input, answer)``.
+
+    ``degrees`` has at most ``len(default_degrees)`` entries (a shorter tuple repeats its
+    last entry), each in ``1 .. max_degree``: the exact algorithms of the kind grow
+    quickly with the degree (implicitization and intersection are resultants of degree
+    ``n^2``; composition has degree ``n (l + m)``).
+    """
 
     name: str
     description: str
     default_degrees: tuple
     builders: dict = field(default_factory=dict)
+    max_degree: int = MAX_DEGREE
 
     @property
     def families(self) -> tuple:
@@ -584,8 +591,8 @@ def _roots(family):
 
 
 # ----------------------------------------------------------------------------- registry
-def _kind(name, description, default_degrees, factory, families):
-    return Kind(name, description, default_degrees, {f: factory(f) for f in families})
+def _kind(name, description, default_degrees, factory, families, max_degree=MAX_DEGREE):
+    return Kind(name, description, default_degrees, {f: factory(f) for f in families}, max_degree)
 
 
 _EVAL_FAMILIES = ("random", "endpoints", "weights_wide", "extreme_coefficients", "high_degree")
@@ -594,16 +601,16 @@ KINDS = {
     k.name: k
     for k in (
         _kind("curve_eval", "Bézier / rational Bézier curve: point, first and second derivative at parameters", (3,), _curve_eval, _EVAL_FAMILIES),
-        _kind("surface_eval", "Bézier / rational Bézier surface: point and unnormalised normal S_u x S_v", (2, 2), _surface_eval, _EVAL_FAMILIES),
+        _kind("surface_eval", "Bézier / rational Bézier surface: point and unnormalised normal S_u x S_v", (2, 2), _surface_eval, _EVAL_FAMILIES, max_degree=20),
         _kind("bspline_eval", "B-spline / NURBS curve and surface evaluation (de Boor)", (3, 2), _bspline_eval, ("random", "endpoints", "weights_wide", "extreme_coefficients", "high_degree")),
         _kind("knot_insertion", "B-spline / NURBS curve knot insertion (Boehm)", (3,), _knot_insertion, ("random", "endpoints", "weights_wide", "extreme_coefficients", "high_degree")),
         _kind("bezier_extraction", "B-spline / NURBS curve to Bézier segments", (3,), _bezier_extraction, ("random", "weights_wide", "extreme_coefficients", "high_degree")),
         _kind("degree_elevation", "Bézier / rational Bézier degree elevation", (3,), _degree_elevation, ("random", "weights_wide", "extreme_coefficients", "high_degree")),
         _kind("subdivision", "Bézier / rational Bézier subdivision (de Casteljau)", (3,), _subdivision, ("random", "endpoints", "weights_wide", "extreme_coefficients", "high_degree")),
-        _kind("compose", "composition F(K(t)) of a Bézier or NURBS surface with a domain curve", (2, 1, 2), _compose, ("random", "nurbs", "weights_wide")),
-        _kind("implicitize", "implicit equation of a planar (rational) Bézier curve", (3,), _implicitize, ("random", "weights_wide", "shared_algebraic")),
-        _kind("inversion", "parameter of points on a planar curve, and the inversion formula", (3,), _inversion, ("random", "endpoints", "weights_wide")),
-        _kind("intersect", "planar curve-curve intersection: algebraic parameters, multiplicities, overlaps", (3, 3), _intersect, ("random", "tangency", "higher_contact", "clustered", "endpoints", "shared_algebraic", "weights_wide")),
+        _kind("compose", "composition F(K(t)) of a Bézier or NURBS surface with a domain curve", (2, 1, 2), _compose, ("random", "nurbs", "weights_wide"), max_degree=8),
+        _kind("implicitize", "implicit equation of a planar (rational) Bézier curve", (3,), _implicitize, ("random", "weights_wide", "shared_algebraic"), max_degree=12),
+        _kind("inversion", "parameter of points on a planar curve, and the inversion formula", (3,), _inversion, ("random", "endpoints", "weights_wide"), max_degree=8),
+        _kind("intersect", "planar curve-curve intersection: algebraic parameters, multiplicities, overlaps", (3, 3), _intersect, ("random", "tangency", "higher_contact", "clustered", "endpoints", "shared_algebraic", "weights_wide"), max_degree=8),
         _kind("roots", "real roots in [0, 1] of a Bernstein polynomial, with multiplicities", (5,), _roots, ("random", "clustered", "tangency", "endpoints", "extreme_coefficients", "high_degree")),
     )
 }

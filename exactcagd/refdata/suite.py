@@ -8,9 +8,10 @@ the JSON Schemas under ``schemas/`` and ``manifest.json``.  Output is byte-ident
 for ``--jobs 1``, ``--jobs N`` and ``--dask`` (records are pure functions of their id
 and are written in index order).
 
-Input is checked before any work: unknown kind or family, degrees outside
-``1..40``, a count outside ``1..10^7``, an output path that is a directory, a device
-or in a missing folder all raise :class:`exactcagd.errors.InputError` /
+Input is checked before any work: unknown kind or family, too many degrees or
+degrees outside the kind's range (``1..40``; 8 to 20 for the costly kinds), a count
+outside ``1..10^7``, an output path that is a directory, a device or in a missing
+folder all raise :class:`exactcagd.errors.InputError` /
 :class:`exactcagd.errors.OutputError` naming the argument.
 
 >>> import tempfile, pathlib, json
@@ -31,7 +32,7 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..outputs import atomic_write_text, check_output_dir, check_output_file, staged_dir
-from .kinds import KINDS, MAX_DEGREE, kind_named
+from .kinds import KINDS, kind_named
 from .manifest import build_manifest, manifest_text, schema_path
 from .stream import Progress, ordered_lines, plan_batches
 
@@ -61,7 +62,11 @@ _SLOW_FAMILY_CAP = {("intersect", "weights_wide"): 8, ("curve_eval", "high_degre
 
 
 def parse_degrees(text, kind: str) -> tuple:
-    """``"3"`` or ``"2,1,2"`` (``None``: the kind's default) -> tuple of degrees in ``1..40``."""
+    """``"3"`` or ``"2,1,2"`` (``None``: the kind's default) -> the kind's degrees, checked.
+
+    A kind takes up to ``len(default_degrees)`` degrees (compose: ``N,l,m``; surface and
+    B-spline evaluation: ``l,m``; intersect: ``n1,n2``), each in ``1 .. max_degree``.
+    """
     spec = kind_named(kind)
     if text is None:
         return spec.default_degrees
@@ -69,8 +74,11 @@ def parse_degrees(text, kind: str) -> tuple:
         degrees = tuple(int(x) for x in str(text).split(","))
     except ValueError:
         raise InputError(f"--degree: expected integers like 3 or 2,1,2, got {text!r}") from None
-    if not 1 <= len(degrees) <= 3 or any(not 1 <= d <= MAX_DEGREE for d in degrees):
-        raise InputError(f"--degree: one to three degrees, each in 1..{MAX_DEGREE}, got {text!r}")
+    arity = len(spec.default_degrees)
+    if not 1 <= len(degrees) <= arity:
+        raise InputError(f"--degree: {kind} takes 1 to {arity} degree(s), got {text!r}")
+    if any(not 1 <= d <= spec.max_degree for d in degrees):
+        raise InputError(f"--degree: {kind} degrees must be in 1..{spec.max_degree}, got {text!r}")
     return degrees
 
 
