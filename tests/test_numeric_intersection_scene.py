@@ -76,3 +76,22 @@ def test_plan_states_the_exact_cost(tmp_path, capsys):
 def test_bad_method_is_a_scene_error():
     with pytest.raises(SceneError):
         parse_scene(_scene("newton"))
+
+
+def test_plan_warns_when_the_exact_route_is_long(tmp_path, capsys):
+    """Two degree-20 curves (the largest pair a scene admits, result degree 400):
+    exact_cost(20, 20) = 0.01 + 2.5e-6 * 400^2.5 = 8 s > WARN_EXACT_SECONDS = 5 s."""
+    import random
+
+    rng = random.Random(3)
+    curves = {k: {"type": "bezier", "control_points": [[rng.randint(-9, 9), rng.randint(-9, 9)] for _ in range(21)]} for k in "ab"}
+    scene = {"scene": {"name": "deg20"}, "curves": curves,
+             "products": [{"kind": "intersections", "name": "x", "curves": ["a", "b"], "method": "exact"}]}
+    path = tmp_path / "deg20.json"
+    path.write_text(json.dumps(scene))
+    t0 = time.process_time()
+    assert main(["plan", str(path), "--out", str(tmp_path / "out")]) == 0
+    assert time.process_time() - t0 < 10  # plan estimates, it does not intersect
+    out = capsys.readouterr()
+    text = out.out + out.err
+    assert "takes ~8 s" in text and "degrees 20 x 20" in text

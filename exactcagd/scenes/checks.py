@@ -57,7 +57,7 @@ def implicit_seconds(degree: int) -> float:
 
 
 #: estimated seconds of exact intersection (numeric.intersection.exact_cost) above which plan warns
-WARN_EXACT_SECONDS = 10
+WARN_EXACT_SECONDS = 5
 
 
 def _domain_box(surface):
