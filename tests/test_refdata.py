@@ -298,3 +298,58 @@ def test_published_schemas_are_up_to_date():
     for kind in KINDS:
         assert schema_path(kind).read_text(encoding="utf-8") == schema_text(kind), f"run python -m exactcagd.refdata.schemagen ({kind})"
         jsonschema.Draft202012Validator.check_schema(json.loads(schema_path(kind).read_text()))
+
+
+def _walk_pairs(node, out):
+    """Collect (exact, companion) pairs: every key X with a sibling X_f64, and every algebraic number."""
+    if isinstance(node, dict):
+        if set(node) == {"poly", "interval", "f64"}:
+            out.append(("algebraic", node))
+            return
+        for key, value in node.items():
+            if key.endswith("_f64"):
+                assert key[:-4] in node, f"companion {key} without its exact field"
+                out.append(("pair", (node[key[:-4]], value)))
+            else:
+                _walk_pairs(value, out)
+    elif isinstance(node, list):
+        for item in node:
+            _walk_pairs(item, out)
+
+
+def _exact_leaves(exact_value, companion):
+    if isinstance(exact_value, list):
+        assert isinstance(companion, list) and len(exact_value) == len(companion)
+        for e, c in zip(exact_value, companion):
+            yield from _exact_leaves(e, c)
+    else:
+        yield exact_value, companion
+
+
+def test_every_exact_value_has_a_correctly_rounded_companion():
+    """Walk one record of every kind and family: each X_f64 is MPFR's rounding of X; each algebraic
+    number's polynomial changes sign on its interval and its f64 is the rounding of the root refined by mpmath."""
+    checked = 0
+    for kind in KINDS:
+        for rec in _records(kind, 1):
+            pairs = []
+            _walk_pairs(rec, pairs)
+            for what, item in pairs:
+                if what == "pair":
+                    for e, c in _exact_leaves(*item):
+                        assert isinstance(e, int) or "/" in e
+                        assert c == float.hex(_mpfr_round(Fraction(e)))
+                        checked += 1
+                    continue
+                lo, hi = (Fraction(v) for v in item["interval"])
+                poly = item["poly"]
+                value = lambda x: sum(c * x**k for k, c in enumerate(poly))  # noqa: E731
+                if lo == hi:
+                    assert value(lo) == 0 and item["f64"] == float.hex(_mpfr_round(lo))
+                else:
+                    assert value(lo) * value(hi) < 0
+                    with mpmath.workdps(80):
+                        root = _mp_root(item)
+                        assert float.fromhex(item["f64"]) == float(mpmath.mpf(root))
+                checked += 1
+    assert checked > 1000
