@@ -111,6 +111,7 @@ def test_records_are_in_index_order_and_ids_are_unique(tmp_path):
         (["refdata", "roots", "--format", "bezier", "--out", "-"], "--out"),
         (["refdata", "roots", "--format", "xml"], "--format"),
         (["refdata", "suite"], "--out"),
+        (["refdata", "suite", "--out", "/tmp/x", "--degree", "3"], "--degree"),
     ],
 )
 def test_bad_input_is_refused_with_the_argument_named(argv, needle, capsys):

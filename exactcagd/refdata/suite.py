@@ -213,6 +213,9 @@ def cmd_refdata(args) -> int:
             raise InputError("--format: a suite is written as JSON Lines; use --format bezier with the intersect or implicitize kind")
         if args.out in (None, "-"):
             raise InputError("--out: refdata suite needs an output folder (--out DIR)")
+        for name, value in (("--degree", args.degree), ("--family", args.family)):
+            if value is not None:
+                raise InputError(f"{name}: the standard suite uses every family at each kind's default degrees; {name} applies to a single kind")
         count = None if args.count is None else check_count(args.count)
         manifest = write_suite(args.out, seed=args.seed, count=count, jobs=args.jobs, dask=args.dask, scheduler=args.scheduler, progress=args.progress)
         total = sum(f["records"] for f in manifest["files"].values())
