@@ -365,6 +365,10 @@ def blossom(c: np.ndarray, params) -> object:
     Symmetric, multi-affine, and ``f(t, ..., t) = p(t)``.
     """
     n = c.shape[0] - 1
+    if isinstance(params, (str, bytes, bytearray)) or not hasattr(params, "__len__"):
+        raise InputError(f"blossom: expected a sequence of {n} parameters, got {type(params).__name__}")
+    if len(params) != n:
+        raise InputError(f"blossom of a degree-{n} polynomial needs {n} arguments, got {len(params)}")
     params = [_param(t) for t in params]
     if len(params) != n:
         raise InputError(f"blossom of a degree-{n} polynomial needs {n} arguments, got {len(params)}")

@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 from gmpy2 import mpq
 
-from ..errors import DegreeError, DimensionError, DomainError
+from ..errors import DegreeError, DimensionError, DomainError, InputError
 from ..exact import bernstein as bz
 from ..exact.scalars import rational_str, to_count, to_rational, to_sympy
 from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, unit_parameter, weight_array
@@ -160,7 +160,7 @@ class BezierSurface:
 
     def reparametrize(self, u_range=(0, 1), v_range=(0, 1)) -> "BezierSurface":
         """The patch over ``u_range x v_range`` reparametrized to [0, 1]^2 (polar form)."""
-        (u0, u1), (v0, v1) = [(to_rational(a), to_rational(b)) for a, b in (u_range, v_range)]
+        (u0, u1), (v0, v1) = [_range(r, name) for r, name in ((u_range, "u_range"), (v_range, "v_range"))]
         if u0 == u1 or v0 == v1:
             raise DomainError("reparametrize needs non-degenerate ranges")
         array = bz.along(0, bz.restrict, self._array(), u0, u1)
@@ -287,3 +287,10 @@ class BezierSurface:
 
 def _cross(a, b) -> tuple:
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def _range(pair, name: str) -> tuple:
+    """``(a, b)`` as two exact numbers; anything else is an :class:`InputError` naming ``name``."""
+    if isinstance(pair, (str, bytes, bytearray)) or not hasattr(pair, "__len__") or len(pair) != 2:
+        raise InputError(f"{name}: expected a pair (a, b) of numbers, got {str(pair)[:40]!r}")
+    return to_rational(pair[0], where=f"{name}[0]"), to_rational(pair[1], where=f"{name}[1]")

@@ -23,11 +23,12 @@ import math
 import numpy as np
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import DegreeError, DimensionError, DomainError, InputError, NotSupportedError
 from ..exact import bernstein as bz
 from ..exact.algebraic import RealAlgebraic
 from ..exact.quadratic import QuadraticNumber, sqrt_rational
-from ..exact.scalars import to_rational
+from ..exact.scalars import to_count, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from . import _exact as ex
 
@@ -214,8 +215,8 @@ def derivatives_at(curve: BezierCurve, t, order: int, interval=(0, 1)) -> list:
     """
     t0, t1 = _interval(interval)
     u = (to_rational(t, where="t") - t0) / (t1 - t0)
-    if order < 0:
-        raise InputError("order must be >= 0")
+    order = to_count(order, where="order")
+    limits.check("max_degree", order, "derivatives_at: order")
     h = curve.homogeneous()
     derivs = []
     c = h

@@ -223,7 +223,9 @@ def hybrid_curve(curve: BezierCurve, n: int, m: int | None = None) -> Hybrid:
     if not isinstance(curve, BezierCurve):
         raise InputError("hybrid_curve needs a BezierCurve")
     r = curve.degree
-    m = n // 2 if m is None else m
+    n = to_count(n, where="n", error=DegreeError)
+    limits.check("max_degree", n + r, f"hybrid_curve: degree n + r = {n} + {r}")
+    m = n // 2 if m is None else to_count(m, where="m", error=DegreeError)
     if not (0 < m < n):
         raise DegreeError(f"need 0 < m < n (got n = {n}, m = {m})")
     w = curve.weights_array()
