@@ -221,6 +221,7 @@ def predicate(test: Callable[[Any], Any]) -> Callable[[Any], str | None]:
 # ------------------------------------------------------------------ registry
 _TAG = re.compile(r"\((\d+(?:\.\d+)?)\)")
 _RANGE = re.compile(r"\((\d+)\.(\d+)\)\s*[-–]\s*\((\d+)\.(\d+)\)")
+_PLAIN_RANGE = re.compile(r"\((\d+)\)\s*[-–]\s*\((\d+)\)")
 
 
 def tags_in(ref: str) -> list[str]:
@@ -230,6 +231,10 @@ def tags_in(ref: str) -> list[str]:
     ['(18.28)', '(18.29)', '(18.30)', '(18.31)', '(7)']
     """
     out = []
+    for m in _PLAIN_RANGE.finditer(ref):
+        a, b = int(m.group(1)), int(m.group(2))
+        if a <= b:
+            out += [f"({k})" for k in range(a, b + 1)]
     for m in _RANGE.finditer(ref):
         a, i, b, j = (int(g) for g in m.groups())
         if a == b and i <= j:

@@ -242,8 +242,35 @@ def statement2():
     assert general.true_degree() == 2 and general.homogeneous().tolist() != bz.elevate(short.homogeneous(), 2).tolist()
     return verified(
         "(17), (18) symbolic for (l, m) in (1,1), (2,1), (2,2) with beta_0 = beta_1 = 1 (as the proof assumes): the degree "
-        "elevation of the homogeneous points (omega_a F_a, omega_a). For beta_0 != beta_1 the Theorem-2 net is the iso "
-        "net times W(t)^m (a common factor, removed by exact gcd reduction), not a degree elevation"
+        "elevation of the homogeneous points (omega_a F_a, omega_a), with the lower limit a >= 0 printed in (17); (18) as "
+        "printed (a > 0) is the row '(18) lower limit'. For beta_0 != beta_1 the Theorem-2 net is the iso "
+        "net times W(t)^m (a common factor, removed by exact gcd reduction), not a degree elevation",
+        compared="(17) as printed and (18) with (17)'s limit vs the Theorem-2 net computed symbolically (sympy), and vs "
+        "sympy degree elevation of (omega_a F_a, omega_a)",
+        reference="sympy",
+    )
+
+
+@claim(doc="lasser", section="V", ref="(18) lower limit", statement="Omega_R B_R = sum_{a = R - m, a > 0}^R C(l,a) C(m,R-a)/C(l+m,R) omega_a F_a")
+def eq18_lower_limit():
+    l, m = 2, 1
+    net, curve, (u0, u1, s) = _iso_symbolic(l, m, rational=True)
+    general = compose_homogeneous_lasser(net, curve)
+    Fa = [_F_a(net, u0, u1, s, a) for a in range(l + 1)]
+
+    def is_theorem2_net(lower):
+        for R in range(l + m + 1):
+            formula = sum((sympy.Rational(bz.binomial(l, a) * bz.binomial(m, R - a), bz.binomial(l + m, R)) * Fa[a][0]
+                           for a in range(lower(R, m), min(R, l) + 1)), sympy.Integer(0))
+            if sympy.expand(general[R][0] - formula) != 0:
+                return f"R = {R}: the sum misses the a = 0 term omega_0 F_0 (l, m = {l}, {m})"
+        return None
+
+    return reconstructed(
+        "sum from a = R - m, a > 0 (in (18); (17) prints a >= 0)",
+        "sum from a = max(0, R - m) (a >= 0, as in (17))",
+        "the same damaged limit as (12): with a > 0, Omega_0 B_0 = 0 while the Theorem-2 net (symbolic) has omega_0 F_0",
+        printed_form=lambda R, m_: max(1, R - m_), corrected_form=lambda R, m_: max(0, R - m_), check=L.predicate(is_theorem2_net),
     )
 
 
