@@ -50,20 +50,26 @@ def sym(curve, var):
 
 
 def expected_points(c1, c2):
-    """``[(s*, t*, multiplicity)]`` in [0, 1]^2 by sympy.solve, multiplicity = order of s* in
-    Res_t (square-free factorization)."""
+    """``[(s*, t*, multiplicity)]`` in [0, 1]^2 by sympy.solve; multiplicity = the smaller of
+    the orders of s* in Res_t and of t* in Res_s (square-free factorizations): a line
+    through a double point of the other curve has a double root in one resultant only,
+    and crosses each branch once."""
     X1, Y1, W1 = sym(c1, s)
     X2, Y2, W2 = sym(c2, t)
     A, B = sympy.expand(X1 * W2 - X2 * W1), sympy.expand(Y1 * W2 - Y2 * W1)
     R = sympy.Poly(sympy.resultant(A, B, t), s)
+    Rt = sympy.Poly(sympy.resultant(A, B, s), t)
     assert not R.is_zero
+
+    def order(poly, var, value):
+        return next(k for f, k in poly.sqf_list()[1] if sympy.simplify(f.as_expr().subs(var, value)) == 0)
+
     out = []
     for sol in sympy.solve([A, B], [s, t], dict=True):
         a, b = sympy.nsimplify(sol[s]), sympy.nsimplify(sol[t])
         if not (a.is_real and b.is_real and 0 <= a <= 1 and 0 <= b <= 1):
             continue
-        mult = next(k for f, k in R.sqf_list()[1] if sympy.simplify(f.as_expr().subs(s, a)) == 0)
-        out.append((a, b, mult))
+        out.append((a, b, min(order(R, s, a), order(Rt, t, b))))
     return out
 
 
@@ -90,6 +96,10 @@ FIXTURES = {
     "rational tangent": (BezierCurve([[1, 0], [1, 1], [0, 1]], weights=[1, 1, 2]), BezierCurve([["-1/5", "7/5"], ["7/5", "1/5"]])),
     # improper parabola (u -> (2u - 1)^2 traces it twice) against y = 1/4: two s for one t
     "improper crossing": (_improper_parabola(), BezierCurve([[-1, "1/4"], [2, "1/4"]])),
+    # the line y = x/2 through the node of y^2 = x^2 (x + 1) (u^2 - 1, u^3 - u): crosses
+    # both branches at the node (one t, two s), and the loop once more; both orders
+    "line through a double point": (bezier(u**2 - 1, u**3 - u, 1, "-3/2", "3/2"), BezierCurve([[-1, "-1/2"], [1, "1/2"]])),
+    "double point, line first": (BezierCurve([[-1, "-1/2"], [1, "1/2"]]), bezier(u**2 - 1, u**3 - u, 1, "-3/2", "3/2")),
 }
 
 
@@ -115,6 +125,8 @@ def test_fixture_expectations_are_what_the_names_say():
     assert [m for *_, m in expected_points(*FIXTURES["tangent order 3"])] == [3]
     assert [m for *_, m in expected_points(*FIXTURES["rational tangent"])] == [2]
     assert len(expected_points(*FIXTURES["improper crossing"])) == 2
+    # the node (x = 0, u = +-1) twice, and u = 1/2 (by hand: u x = x / 2), all transversal
+    assert sorted(m for *_, m in expected_points(*FIXTURES["line through a double point"])) == [1, 1, 1]
 
 
 # ------------------------------------------------------------------ shared algebraic curves
