@@ -83,6 +83,35 @@ def test_planted_cache_files_never_run(tmp_path):
     assert data["product"]["name"] == "image" and data["result"]["pieces"]
 
 
+def test_planted_fifos_links_and_folders_in_the_cache_are_misses(tmp_path, capsys):
+    """A FIFO as a manifest (a plain read would block forever), a link to /dev/zero as a blob (a
+    read would never end) and a folder as a manifest: misses, the run completes, outputs are right."""
+    import os
+
+    path = write_scene(tmp_path, PLAIN)
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out)]) == 0
+    good = outputs(out / "small")
+    keys = {i.product["name"]: i.key for i in Runner(load_scene(path), out).plan()}
+    cache_dir = out / ".cache"
+    manifest = cache_dir / f"{keys['image']}.entry.json"
+    manifest.unlink()
+    os.mkfifo(manifest)
+    blob = cache_dir / f"{keys['crossed']}.out.json"
+    blob.unlink()
+    blob.symlink_to("/dev/zero")
+    folder = cache_dir / f"{keys['cuts']}.entry.json"
+    folder.unlink()
+    folder.mkdir()
+    start = time.perf_counter()
+    assert main(["run", str(path), "--out", str(out)]) == 0
+    assert time.perf_counter() - start < 60
+    assert "not cached" in capsys.readouterr().err  # the folder and the FIFO cannot be replaced
+    assert {k: v for k, v in outputs(out / "small").items() if k != "timings.json"} == {k: v for k, v in good.items() if k != "timings.json"}
+    status = {t["name"]: t["status"] for t in json.loads((out / "small" / "timings.json").read_text())["products"]}
+    assert status == {"crossed": "computed", "image": "computed", "cuts": "computed"}
+
+
 def test_tampered_cache_blob_is_a_miss(tmp_path):
     """A blob that does not match the SHA-256 of its manifest is recomputed, not copied."""
     path = write_scene(tmp_path, PLAIN)

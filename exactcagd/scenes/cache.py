@@ -28,7 +28,9 @@ from __future__ import annotations
 import functools
 import hashlib
 import json
+import os
 import re
+import stat
 from pathlib import Path
 
 from ..outputs import atomic_write_bytes
@@ -110,6 +112,27 @@ def product_key(product: dict, inputs: dict, dependencies: dict, policy: str) ->
     return hashlib.sha256(payload.encode()).hexdigest()[:24]
 
 
+MAX_MANIFEST_BYTES = 1 << 20
+
+
+def _read_regular(path: Path, limit: int | None = None) -> bytes | None:
+    """Bytes of ``path`` if it is a regular file (not a link, FIFO or device) of at most ``limit`` bytes.
+
+    A planted FIFO would block a plain read forever and a link to ``/dev/zero`` would
+    never end; they are misses.  ``O_NONBLOCK`` keeps the open of a FIFO from waiting.
+    """
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError:
+        return None
+    info = os.fstat(fd)
+    if not stat.S_ISREG(info.st_mode) or (limit is not None and info.st_size > limit):
+        os.close(fd)
+        return None
+    with os.fdopen(fd, "rb") as handle:
+        return handle.read()
+
+
 class CacheEntry:
     """A validated cache entry: ``info`` and the output blobs (read on demand)."""
 
@@ -120,11 +143,8 @@ class CacheEntry:
         """``{suffix: bytes}`` of the outputs, or ``None`` if a blob is missing or does not match its hash."""
         out = {}
         for suffix, digest in self.files.items():
-            try:
-                data = self.cache.blob_path(self.key, suffix).read_bytes()
-            except OSError:
-                return None
-            if hashlib.sha256(data).hexdigest() != digest:
+            data = _read_regular(self.cache.blob_path(self.key, suffix))
+            if data is None or hashlib.sha256(data).hexdigest() != digest:
                 return None
             out[suffix] = data
         return out
@@ -144,10 +164,10 @@ class ProductCache:
 
     def lookup(self, key: str) -> CacheEntry | None:
         """The entry of ``key`` if its manifest is well-formed data for this key, else ``None``."""
+        raw = _read_regular(self.manifest_path(key), MAX_MANIFEST_BYTES)
         try:
-            text = self.manifest_path(key).read_text(encoding="utf-8")
-            data = json.loads(text)
-        except (OSError, ValueError, RecursionError):
+            data = json.loads(raw.decode("utf-8")) if raw is not None else None
+        except (ValueError, RecursionError):
             return None
         if not (
             isinstance(data, dict)

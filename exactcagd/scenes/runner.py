@@ -192,8 +192,11 @@ class Runner:
         name = item.product["name"]
         self._result(name)
         files, info, extra = self._rendered[name]
-        self.cache.store(item.key, files, {"summary": info.get("summary", "")})
-        self.stored.append(name)
+        try:
+            self.cache.store(item.key, files, {"summary": info.get("summary", "")})
+            self.stored.append(name)
+        except (OSError, ExactCAGDError) as exc:  # the cache is best effort: a planted FIFO, a full disk
+            print(f"note: {name} is not cached ({exc})", file=sys.stderr)
         return files, info, "computed", extra
 
     def _result(self, name: str):
