@@ -417,6 +417,19 @@ def test_bad_out_is_a_clear_error_before_work(argv_out, command, tmp_path, monke
         assert Path(argv_out).read_text() == "keep me"
 
 
+@pytest.mark.parametrize("folder", [".cache", "small"])
+def test_linked_cache_or_scene_folder_is_refused(folder, tmp_path, capsys):
+    """A symbolic link planted as out/.cache or out/<scene> would send the writes elsewhere."""
+    path = write_scene(tmp_path, PLAIN)
+    out, elsewhere = tmp_path / "out", tmp_path / "elsewhere"
+    out.mkdir()
+    elsewhere.mkdir()
+    (out / folder).symlink_to(elsewhere)
+    assert main(["run", str(path), "--out", str(out)]) == 2
+    assert "symbolic link" in capsys.readouterr().err
+    assert not any(elsewhere.iterdir())
+
+
 def test_scene_folder_that_is_a_file_is_refused_before_work(tmp_path, capsys):
     path = write_scene(tmp_path, SCENE)
     out = tmp_path / "out"

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .. import __version__
-from ..errors import ExactCAGDError, InputError
+from ..errors import ExactCAGDError, InputError, OutputError
 from ..outputs import atomic_write_bytes, check_output_dir, staged_dir
 from . import products as handlers
 from .build import build_curve, build_surface
@@ -102,8 +102,10 @@ class Runner:
     def check_outputs(self, argument: str = "--out") -> None:
         """Refuse an output folder that cannot be written (a file, /proc/x, ...) before any work."""
         check_output_dir(self.out_dir, argument=argument)
-        check_output_dir(self.scene_dir, argument=argument)
-        check_output_dir(self.cache_dir, argument=argument)
+        for folder in (self.scene_dir, self.cache_dir):
+            check_output_dir(folder, argument=argument)
+            if folder.is_symlink():  # a link planted in the output folder would send our writes elsewhere
+                raise OutputError(f"{argument}: {folder} is a symbolic link; exactcagd writes only into real folders")
 
     # ------------------------------------------------------------------ planning
     def _dependencies(self, product: dict) -> list[str]:
