@@ -869,13 +869,18 @@ def cmd_conformance(args) -> int:
     if args.limit is not None and args.limit < 1:
         raise InputError(f"--limit: expected a positive count, got {args.limit}")
     started = time.perf_counter()
-    last = [0.0]
+    last = [0.0, None, 0.0]  # last print, current kind, its start
 
     def progress(kind, done, total):
         now = time.perf_counter()
+        if kind != last[1]:
+            last[1], last[2] = kind, now
         if done == total or now - last[0] > 0.5:
             last[0] = now
-            print(f"\r{adapter.name} {kind}: {done}/{total}", end="\n" if done == total else "", file=sys.stderr, flush=True)
+            rate = done / max(now - last[2], 1e-9)
+            eta = (total - done) / rate if rate > 0 else 0.0
+            print(f"\r{adapter.name} {kind:<18} {done}/{total}  {rate:,.0f} records/s  ETA {eta:4.0f} s",
+                  end="\n" if done == total else "", file=sys.stderr, flush=True)
 
     report = run_conformance(adapter, suite, kinds=kinds, limit=args.limit, progress=None if args.quiet else progress)
     target = write_report(report, args.out)
