@@ -67,7 +67,7 @@ def _clamped(p: int, inner: list) -> list:
 
 
 @settings(max_examples=30, deadline=None)
-@given(st.integers(1, 4), st.lists(st.fractions(min_value="1/16", max_value="15/16", max_denominator=16), max_size=4),
+@given(st.integers(1, 4), st.lists(st.fractions(min_value="1/16", max_value="15/16", max_denominator=16), max_size=4, unique=True),
        st.booleans(), st.data())
 def test_bspline_curve_round_trip(p, inner, rational, data):
     knots = _clamped(p, sorted(mpq(f.numerator, f.denominator) for f in inner))
