@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from ..errors import InputError
 from .kinds import make_record, preload
 
-__all__ = ["BatchSpec", "batch_lines", "plan_batches", "ordered_lines", "Progress", "record_line"]
+__all__ = ["BatchSpec", "batch_lines", "plan_batches", "RecordExecutor", "ordered_lines", "Progress", "record_line"]
 
 #: Largest batch (records per task).
 MAX_BATCH = 64
@@ -134,6 +134,69 @@ def _dask_client(jobs: int, scheduler):
     return client, cluster
 
 
+class RecordExecutor:
+    """Where batches run: this process, a local process pool, or a Dask cluster (a context manager).
+
+    One executor serves many calls of :meth:`lines` (a whole suite: one pool, one
+    cluster).  ``kinds`` are imported before workers start (forked workers inherit
+    them; Dask workers import them once through ``client.run``).
+
+    >>> with RecordExecutor(jobs=1) as ex:
+    ...     len(list(ex.lines(plan_batches("roots", "random", 3, 0, (2,), 1))))
+    3
+    """
+
+    def __init__(self, jobs: int = 1, dask: bool = False, scheduler=None, kinds=()):
+        self.jobs, self.dask, self.scheduler, self.kinds = jobs, bool(dask or scheduler), scheduler, tuple(kinds)
+        self._pool = self._client = self._cluster = None
+        self.workers = 1
+
+    def __enter__(self) -> "RecordExecutor":
+        if self.dask:
+            self._client, self._cluster = _dask_client(self.jobs, self.scheduler)
+            self.workers = max(1, len(self._client.scheduler_info().get("workers", {})) or self.jobs)
+            if self.kinds:
+                self._client.run(preload, sorted(self.kinds))
+        elif self.jobs > 1:
+            preload(self.kinds)
+            self._pool = ProcessPoolExecutor(max_workers=self.jobs)
+            self.workers = self.jobs
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(cancel_futures=True)
+        if self._client is not None:
+            self._client.close()
+        if self._cluster is not None:
+            self._cluster.close()
+
+    def lines(self, specs, progress: Progress | None = None):
+        """Yield the JSON lines of ``specs`` in order (at most a window of batches in flight)."""
+        if self._client is not None:
+            submit = lambda spec: self._client.submit(batch_lines, spec, pure=False)  # noqa: E731
+            window = 4 * self.workers + 2  # hides the scheduler round trip
+        elif self._pool is not None:
+            submit = lambda spec: self._pool.submit(batch_lines, spec)  # noqa: E731
+            window = 2 * self.workers + 2
+        else:
+            submit, window = _Done, 1
+        for spec, lines in _windowed(submit, specs, window):
+            yield from lines
+            if progress:
+                progress.update(spec.size)
+
+
+class _Done:
+    """A finished 'future' for in-process runs (computed when submitted)."""
+
+    def __init__(self, spec):
+        self._lines = batch_lines(spec)
+
+    def result(self):
+        return self._lines
+
+
 def ordered_lines(specs, jobs: int = 1, dask: bool = False, scheduler=None, progress: Progress | None = None):
     """Yield the JSON lines of all ``specs`` in order, computed where asked.
 
@@ -145,31 +208,6 @@ def ordered_lines(specs, jobs: int = 1, dask: bool = False, scheduler=None, prog
     scheduler : address of an existing Dask scheduler (implies Dask)
     progress : updated with the number of records of each finished batch
     """
-    if dask or scheduler:
-        client, cluster = _dask_client(jobs, scheduler)
-        try:
-            workers = max(1, len(client.scheduler_info().get("workers", {})) or jobs)
-            client.run(preload, sorted({spec.kind for spec in specs}))  # imports once per worker, not inside a batch
-            submit = lambda spec: client.submit(batch_lines, spec, pure=False)  # noqa: E731
-            for spec, lines in _windowed(submit, specs, 4 * workers + 2):  # hides the scheduler round trip
-                yield from lines
-                if progress:
-                    progress.update(spec.size)
-        finally:
-            client.close()
-            if cluster is not None:
-                cluster.close()
-        return
-    if jobs <= 1:
-        for spec in specs:
-            yield from batch_lines(spec)
-            if progress:
-                progress.update(spec.size)
-        return
-    preload({spec.kind for spec in specs})  # forked workers inherit the imports
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
-        submit = lambda spec: pool.submit(batch_lines, spec)  # noqa: E731
-        for spec, lines in _windowed(submit, specs, 2 * jobs + 2):
-            yield from lines
-            if progress:
-                progress.update(spec.size)
+    specs = list(specs)
+    with RecordExecutor(jobs, dask, scheduler, kinds={spec.kind for spec in specs}) as executor:
+        yield from executor.lines(specs, progress)

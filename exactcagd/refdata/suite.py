@@ -34,7 +34,7 @@ from ..errors import InputError
 from ..outputs import atomic_write_text, check_output_dir, check_output_file, staged_dir
 from .kinds import KINDS, kind_named
 from .manifest import build_manifest, manifest_text, schema_path
-from .stream import Progress, ordered_lines, plan_batches
+from .stream import Progress, RecordExecutor, ordered_lines, plan_batches
 
 __all__ = ["STANDARD_COUNTS", "MAX_COUNT", "parse_degrees", "check_count", "write_kind", "write_suite", "cmd_refdata"]
 
@@ -187,7 +187,7 @@ def write_suite(out, seed: int = 0, count=None, kinds=None, jobs: int = 1, dask:
     jobs = _check_jobs(jobs)
     plan = suite_plan(count, kinds)
     files = {}
-    with staged_dir(target) as stage:
+    with staged_dir(target) as stage, RecordExecutor(jobs, dask, scheduler, kinds=plan) as executor:
         (stage / "schemas").mkdir()
         for kind, per_family in plan.items():
             shutil.copyfile(schema_path(kind), stage / "schemas" / f"{kind}.schema.json")
@@ -196,7 +196,7 @@ def write_suite(out, seed: int = 0, count=None, kinds=None, jobs: int = 1, dask:
             bar = Progress(sum(per_family.values()), f"{kind:<18}", _progress_enabled(progress))
             try:
                 with open(stage / f"{kind}.jsonl", "wb") as handle:
-                    n, digest = _stream_to(handle, ordered_lines(specs, jobs=jobs, dask=dask, scheduler=scheduler, progress=bar))
+                    n, digest = _stream_to(handle, executor.lines(specs, progress=bar))
             finally:
                 bar.close()
             files[f"{kind}.jsonl"] = {"kind": kind, "records": n, "sha256": digest}
