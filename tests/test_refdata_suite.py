@@ -40,10 +40,11 @@ def test_suite_bytes_do_not_depend_on_the_executor(tmp_path):
 
 def test_dask_local_cluster_gives_the_same_bytes(tmp_path, capsys):
     distributed = pytest.importorskip("distributed")
+    write_suite(tmp_path / "local", seed=2, count=2, kinds=SMALL_KINDS, jobs=1)
+    write_suite(tmp_path / "dask", seed=2, count=2, kinds=SMALL_KINDS, jobs=2, dask=True)
+    assert _tree_bytes(tmp_path / "local") == _tree_bytes(tmp_path / "dask")
+    assert capsys.readouterr().err.count("dask dashboard:") == 1  # one cluster for the whole suite
     write_kind(tmp_path / "local.jsonl", "roots", 12, seed=2, family="all", jobs=2)
-    write_kind(tmp_path / "dask.jsonl", "roots", 12, seed=2, family="all", jobs=2, dask=True)
-    assert (tmp_path / "local.jsonl").read_bytes() == (tmp_path / "dask.jsonl").read_bytes()
-    assert "dask dashboard:" in capsys.readouterr().err
     # an existing cluster (--scheduler ADDR); threads only, to keep the test quick
     with distributed.LocalCluster(n_workers=1, processes=False, dashboard_address=None) as cluster:
         write_kind(tmp_path / "sched.jsonl", "roots", 12, seed=2, family="all", jobs=2, scheduler=cluster.scheduler_address)
