@@ -20,7 +20,7 @@ import time
 import traceback
 
 from . import _common
-from ._common import RESULTS, machine, markdown_table, peak_rss
+from ._common import machine, markdown_table, peak_rss
 
 import benchmarks
 
@@ -70,7 +70,7 @@ RUNS_HEADERS = ["module", "mode", "finished", "status", "seconds", "peak RSS of 
 def write_runs(rows: list, quick: bool) -> None:
     """Update ``RUNS.md`` of the mode's results folder (``results/`` quick, ``results/full/`` full):
     this run's rows replace earlier rows of the same modules."""
-    path = (RESULTS if quick else RESULTS / "full") / "RUNS.md"
+    path = (_common.RESULTS if quick else _common.RESULTS / "full") / "RUNS.md"
     keep = {}
     if path.exists():
         for line in path.read_text().splitlines():
@@ -89,7 +89,12 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m benchmarks", description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--only", default=None, help="comma-separated topics or module names")
+    parser.add_argument("--out", default=None, help="folder for the tables and plots (default: benchmarks/results/)")
     args = parser.parse_args(argv)
+    if args.out:
+        from exactcagd.outputs import check_output_dir
+
+        _common.set_results_root(check_output_dir(args.out))
     return run(args.quick, set(args.only.split(",")) if args.only else None)
 
 

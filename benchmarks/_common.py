@@ -16,7 +16,20 @@ import tracemalloc
 from dataclasses import dataclass
 from pathlib import Path
 
+#: Root of every table and plot: the checkout's ``benchmarks/results/`` (never the installed
+#: package: ``benchmarks/`` is not shipped), or ``--out`` through :func:`set_results_root`.
 RESULTS = Path(__file__).resolve().parent / "results"
+
+
+def set_results_root(path) -> Path:
+    """Send the tables and plots of this process under ``path`` (``exactcagd bench --out``).
+
+    Quick runs write ``path/<topic>.md``, full runs ``path/full/<topic>.md``, as under the
+    default ``benchmarks/results/``.
+    """
+    global RESULTS
+    RESULTS = Path(path).resolve()
+    return RESULTS
 
 #: Set by the runner (``python -m benchmarks``): modules whose ``main()`` reads the mode
 #: with :func:`parse_quick` get the runner's mode instead of parsing ``sys.argv``.

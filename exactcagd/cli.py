@@ -128,6 +128,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench = sub.add_parser("bench", help="run the benchmarks")
     bench.add_argument("--quick", action="store_true", help="smaller sizes, minutes not hours (results in benchmarks/results/; full runs in results/full/)")
     bench.add_argument("--only", default=None, help="comma-separated benchmark topics")
+    bench.add_argument("--out", default=None, help="folder for tables and plots (default: the checkout's benchmarks/results/)")
     bench.set_defaults(func=_lazy("exactcagd.apps.bench", "main"))
     return parser
 
