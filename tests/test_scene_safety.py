@@ -351,6 +351,23 @@ def test_result_degree_limit_checked_at_plan_time(tmp_path):
     assert 21 * 21 > LIMITS["max_result_degree"] >= 20 * 20
 
 
+def test_scene_limits_are_limit_errors_and_can_be_raised(tmp_path, monkeypatch):
+    """Scene limits raise LimitError (as the package's limits do) and are raised by setting LIMITS."""
+    from exactcagd.errors import LimitError
+
+    data = _with_products([{"kind": "image_curve", "surface": "big", "curve": "six"}],
+                          six={"type": "bezier", "control_points": [[f"{i}/7", f"{i * i}/49"] for i in range(1, 8)]})
+    data["surfaces"]["big"] = _bezier_net(40)
+    with pytest.raises(LimitError, match="max_result_degree"):
+        Runner(parse_scene(copy.deepcopy(data)), tmp_path)
+    monkeypatch.setitem(LIMITS, "max_result_degree", 480)
+    Runner(parse_scene(data), tmp_path)  # deliberately raised: accepted (nothing computed)
+    with pytest.raises(LimitError, match="max_input_bits"):
+        parse_scene(_with_products(SCENE["products"], k={"type": "bezier", "control_points": [["1e100000000", 0], [1, 1]]}))
+    with pytest.raises(LimitError, match="degree 144"):
+        parse_height("(((x+2)**12)**12)**12", "z")
+
+
 def test_large_exact_products_get_a_warning_in_plan(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(handlers, "compute", lambda *a: pytest.fail("plan computed"))
     points = [[f"{i}/21", f"{(i * 5) % 21}/21"] for i in range(21)]  # degree 20
@@ -392,6 +409,8 @@ def test_exact_domain_check_accepts_a_curve_whose_hull_leaves_the_domain(tmp_pat
         (lambda d: d["surfaces"]["s"]["control_net"].__setitem__("z", "1/(x-x)"), "divides by zero"),
         (lambda d: d["surfaces"]["s"]["control_net"].__setitem__("z", "1/x"), "division only by a non-zero number"),
         (lambda d: d["products"][1].__setitem__("reduce", "yes"), "products[1].reduce"),
+        # found by the long fuzz run: a product named like an object made the cache key recurse forever
+        (lambda d: d["products"][0].__setitem__("name", "s"), "products[0].name: 's' is already the name of an object"),
     ],
 )
 def test_fuzzer_findings_are_scene_errors(mutate, fragment, tmp_path):
@@ -557,12 +576,21 @@ _HOSTILE = [None, True, 0, -1, 10**30, 2**70, 1.5, float("inf"), float("nan"), "
 def test_mutated_scenes_give_a_runner_or_a_scene_error():
     """The fuzzer as a property: any one or two values of a valid scene replaced by hostile ones
     gives a checked Runner or an ExactCAGDError (never a generic exception), within 2 s."""
+    _fuzz_scenes(120)
+
+
+@pytest.mark.slow
+def test_mutated_scenes_long_run():
+    _fuzz_scenes(3000)
+
+
+def _fuzz_scenes(examples: int) -> None:
     from hypothesis import HealthCheck, given, settings
     from hypothesis import strategies as st
 
     paths = list(_paths(SCENE))
 
-    @settings(max_examples=120, deadline=None, suppress_health_check=list(HealthCheck))
+    @settings(max_examples=examples, deadline=None, suppress_health_check=list(HealthCheck))
     @given(st.lists(st.tuples(st.sampled_from(paths), st.sampled_from(_HOSTILE)), min_size=1, max_size=2))
     def check(mutations):
         data = copy.deepcopy(SCENE)

@@ -28,7 +28,7 @@ from ..exact.scalars import float_policy, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve, BSplineSurface
-from .spec import LIMITS, SceneError
+from .spec import LIMITS, SceneError, SceneLimitError
 
 __all__ = ["HeightPolynomial", "parse_height", "build_surface", "build_curve"]
 
@@ -81,14 +81,14 @@ def _bound(node, where: str, depth: int, count: list) -> tuple[int, int, int]:
     """
     count[0] += 1
     if count[0] > LIMITS["max_expression_nodes"]:
-        raise SceneError(f"{where}: expression has more than {LIMITS['max_expression_nodes']} nodes")
+        raise SceneLimitError(f"{where}: expression has more than {LIMITS['max_expression_nodes']} nodes")
     if depth > LIMITS["max_expression_depth"]:
-        raise SceneError(f"{where}: expression nested deeper than {LIMITS['max_expression_depth']} levels")
+        raise SceneLimitError(f"{where}: expression nested deeper than {LIMITS['max_expression_depth']} levels")
     if isinstance(node, ast.Expression):
         return _bound(node.body, where, depth + 1, count)
     if isinstance(node, ast.Constant) and isinstance(node.value, int) and not isinstance(node.value, bool):
         if _bits(node.value) > LIMITS["max_number_bits"]:
-            raise SceneError(f"{where}: integer literal of more than {LIMITS['max_number_bits']} bits")
+            raise SceneLimitError(f"{where}: integer literal of more than {LIMITS['max_number_bits']} bits")
         return 0, _bits(node.value), 0
     if isinstance(node, ast.Name) and node.id in ("x", "y"):
         return 1, 1, 0
@@ -115,9 +115,9 @@ def _bound(node, where: str, depth: int, count: list) -> tuple[int, int, int]:
 
 def _checked(degree: int, num: int, den: int, where: str) -> tuple[int, int, int]:
     if degree > LIMITS["max_expression_degree"]:
-        raise SceneError(f"{where}: expression of degree {degree} exceeds the limit {LIMITS['max_expression_degree']}")
+        raise SceneLimitError(f"{where}: expression of degree {degree} exceeds the limit {LIMITS['max_expression_degree']}")
     if num + den > LIMITS["max_expression_bits"]:
-        raise SceneError(f"{where}: expression coefficients may reach ~{num + den} bits (limit {LIMITS['max_expression_bits']})")
+        raise SceneLimitError(f"{where}: expression coefficients may reach ~{num + den} bits (limit {LIMITS['max_expression_bits']})")
     return degree, num, den
 
 

@@ -32,7 +32,7 @@ from ..errors import ExactCAGDError
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve
-from .spec import LIMITS, Scene, SceneError
+from .spec import LIMITS, Scene, SceneError, SceneLimitError
 
 __all__ = ["check_products", "result_degree", "implicit_seconds", "WARN_IMPLICIT_SECONDS", "WARN_INTERSECTION_DEGREE"]
 
@@ -110,7 +110,7 @@ def result_degree(surface, curve) -> int:
 
 def _check_degree(degree: int, where: str, what: str) -> None:
     if degree > LIMITS["max_result_degree"]:
-        raise SceneError(f"{where}: {what} would have degree {degree}, above LIMITS['max_result_degree'] = {LIMITS['max_result_degree']}")
+        raise SceneLimitError(f"{where}: {what} would have degree {degree}, above LIMITS['max_result_degree'] = {LIMITS['max_result_degree']}")
 
 
 def check_products(scene: Scene, objects: dict, cached=frozenset()) -> list[str]:

@@ -48,9 +48,9 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..errors import InputError
+from ..errors import InputError, LimitError
 
-__all__ = ["SceneError", "Scene", "load_scene", "parse_scene", "LIMITS", "PRODUCT_KINDS"]
+__all__ = ["SceneError", "SceneLimitError", "Scene", "load_scene", "parse_scene", "LIMITS", "PRODUCT_KINDS"]
 
 #: Hard limits that reject absurd scenes before any work starts.
 LIMITS = {
@@ -93,6 +93,10 @@ DEFAULT_APPROXIMATION = "parabola"
 
 class SceneError(InputError):
     """A scene file is malformed; the message names the offending key."""
+
+
+class SceneLimitError(SceneError, LimitError):
+    """A scene exceeds one of ``LIMITS`` (raise one deliberately: ``spec.LIMITS[name] = value``)."""
 
 
 @dataclass
@@ -178,6 +182,8 @@ def parse_scene(data: dict) -> Scene:
         product = _check_product(spec, f"products[{i}]", scene)
         if product["name"] in seen:
             raise SceneError(f"products[{i}].name: duplicate product name {product['name']!r}")
+        if product["name"] in scene.surfaces or product["name"] in scene.curves:
+            raise SceneError(f"products[{i}].name: {product['name']!r} is already the name of an object (pictures refer to both)")
         seen.add(product["name"])
         scene.products.append(product)
     for i, product in enumerate(scene.products):
@@ -214,7 +220,6 @@ def _check_number(x, where: str, policy: str):
     exponent, not expanded.
     """
     from .. import limits
-    from ..errors import LimitError
     from ..exact.scalars import to_rational
 
     if isinstance(x, bool) or not isinstance(x, (int, float, str)):
@@ -224,7 +229,7 @@ def _check_number(x, where: str, policy: str):
         with limits.raised(max_input_bits=bound):
             return to_rational(x, policy=policy, where=where)
     except LimitError as exc:
-        raise SceneError(f"{str(exc).split('; raise it')[0]} (scenes: LIMITS['max_number_bits'])") from None
+        raise SceneLimitError(f"{str(exc).split('; raise it')[0]} (scenes: LIMITS['max_number_bits'])") from None
     except InputError as exc:
         raise SceneError(str(exc)) from None
 
