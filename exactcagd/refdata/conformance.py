@@ -22,10 +22,11 @@ What is measured, per kind (and per family):
   tangency or a cluster, only for losing or inventing solutions; the accuracy of the
   matched ones shows in their ulps;
 * ``ulps``: for every float in an answer whose exact value is within the float64 range
-  (values beyond ``2^1024`` are counted as ``overflows``, not graded), the number of float64 values between it and
-  the correctly rounded exact value (0 = correctly rounded); and ``scaled ulps``: the
-  error in units of the last place of the largest exact value of that field in the
-  record (a coordinate that is exactly 0 and computed as 1e-17 is 4e18 ulps off but a
+  (values beyond ``2^1024`` are counted as ``overflows``, not graded), the number of
+  float64 values between it and the correctly rounded exact value (0 = correctly
+  rounded); and ``scaled ulps``: the error in units of the last place of the largest
+  exact value of that field in the record, or of 1 for parameters, knots and intervals
+  (``PARAMETER_FIELDS``: their domain is [0, 1]) (a coordinate that is exactly 0 and computed as 1e-17 is 4e18 ulps off but a
   fraction of an ulp of the curve's size, which is what a float algorithm can promise:
   judge kernels by scaled ulps, read raw ulps as "how many bits are right"); for the
   worst records of the evaluation kinds the report adds the *data-rounding floor*, the
@@ -35,8 +36,7 @@ What is measured, per kind (and per family):
   points against ``S(K(t))`` in rational arithmetic) and ``under-estimates`` counts
   records where the true error exceeds the kernel's claim *and* ``NOISE_ULPS`` ulps of
   the curve's size (an exact reproduction claimed as 3e-16 and sampled at 4e-16 is
-  float noise, not an under-estimate).  Parameters, knots and intervals are graded in
-  ulps of the domain [0, 1] at least (``PARAMETER_FIELDS``).
+  float noise, not an under-estimate).
 
 >>> sorted(Stats().summary())
 ['max', 'median', 'n', 'p99']
