@@ -12,8 +12,8 @@ fail later fails before any work, with the scene key in the message:
   hull first, then exact sign decisions; :func:`exactcagd.composition.domain.check_inside`);
 * exact result degrees beyond ``LIMITS["max_result_degree"]`` (the image of a degree-n
   domain curve on a degree (l, m) surface has degree ``n (l + m)``, Lasser & Bonneau
-  (000) eq. (5); the intersection polynomial of degree-m and degree-n curves has degree
-  ``m n``, Sederberg's notes 17.8).
+  (000) Theorem 1; the intersection polynomial of degree-m and degree-n curves has degree
+  ``m n``, Sederberg's notes 17.8 and Bezout's theorem, 7.1).
 
 Large implicitization and intersection products get a cost estimate and a warning.
 
@@ -103,7 +103,16 @@ def _implicit_ready(curve, where: str, name: str) -> None:
 
 
 def result_degree(surface, curve) -> int:
-    """Degree ``n (l + m)`` of the exact image of a degree-``n`` domain curve on a degree-``(l, m)`` surface."""
+    """Degree ``n (l + m)`` of the exact image of a degree-``n`` domain curve on a degree-``(l, m)`` surface.
+
+    Lasser & Bonneau (000), Theorem 1 (isoparametric lines have lower degree; this is the
+    bound the planner checks against ``LIMITS["max_result_degree"]``).
+
+    >>> from exactcagd import BezierCurve, BezierSurface
+    >>> S = BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+    >>> result_degree(S, BezierCurve([[0, 0], ["1/2", 1], [1, 0]]))
+    4
+    """
     l, m = surface.degree
     return curve.degree * (l + m)
 
