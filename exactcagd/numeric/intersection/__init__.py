@@ -63,7 +63,7 @@ METHODS = ("subdivision", "interval", "clipping", "exact", "auto")
 #: it is ``WORK_PER_SECOND`` times the exact route's estimated cost (:func:`exact_cost`):
 #: one step costs 0.1-1 ms, so a float route never takes much longer than the exact
 #: route would (measured: random degree-10 pairs need 20-700 steps, degree 15 up to 5000)
-MIN_WORK, MAX_WORK, WORK_PER_SECOND = 500, 5_000, 2_000
+MIN_WORK, MAX_WORK, WORK_PER_SECOND = 200, 5_000, 2_000
 
 
 #: ``method="auto"`` takes the exact route while its estimated cost is below this (seconds):
@@ -102,7 +102,7 @@ def intersect(curve1, curve2, method: str = "subdivision", tol: float = 1e-12, *
         ``None`` returns them uncertified.
     max_work : int or None
         Work bound of the float routes (pairs of pieces examined) before the fallback;
-        ``None``: :func:`default_work` of the degrees (500-5000).
+        ``None``: :func:`default_work` of the degrees (200-5000).
     progress : None, bool or callable
         Progress of the exact route (``True``: stderr; callable ``(stage, done, total)``).
     overlaps : {"return", "raise"}
