@@ -74,3 +74,48 @@ def test_exact_zero_for_the_same_cubic_and_positive_otherwise():
     shifted = BezierCurve([[0, Fr(1, 8)], [1, Fr(17, 8)], [3, Fr(17, 8)], [4, Fr(1, 8)]])
     r = distance_bound(shifted, X)
     assert Fr(1, 8) <= Fr(int(r.numerator), int(r.denominator)) <= Fr(1, 8) * Fr(101, 100)
+
+
+# ---------------------------------------------------------------------------- ball first (issue 18)
+def _shifted(points, delta):
+    return [[p[0] + delta] + list(p[1:]) for p in points]
+
+
+def test_planted_violation_just_above_the_bound_is_caught():
+    """X = F + (delta, 0): sup |F - X| = delta exactly (reference: the construction).  With
+    delta = tol (1 + 2^-50) no certificate <= tol may come out, whichever arithmetic decides;
+    with delta = tol = 2^-10 the bound tol itself is proven."""
+    from exactcagd.composition import ball
+
+    F = [[Fr(0), Fr(0)], [Fr(1, 3), Fr(2)], [Fr(2, 3), Fr(-1)], [Fr(1), Fr(1, 7)]]
+    tol = Fr(1, 2**10)
+    planted = tol * (1 + Fr(1, 2**50))
+    stats: dict = {}
+    bound = distance_bound(BezierCurve(F), BezierCurve(_shifted(F, planted)), target=tol, stats=stats)
+    assert bound > tol and bound >= planted
+    assert sum(stats.values()) == 1 and set(stats) <= {ball.BALL, ball.EXACT}
+    assert distance_bound(BezierCurve(F), BezierCurve(_shifted(F, tol)), target=tol) == tol
+
+
+def test_ball_and_exact_bisections_agree_to_high_precision():
+    """The ball bisection (default) and the exact one bound the same maximum: both >= the
+    exactly sampled maximum, and both stop within the factor (1 + rel) of it."""
+    import flint
+
+    from exactcagd.composition import ball
+    from exactcagd.composition import distance_bound as module
+
+    F = BezierCurve([[0, 0, 1], ["1/3", 2, 0], ["2/3", -1, "1/5"], [1, "1/7", 0]], weights=[1, 2, "1/2", 1])
+    X = BezierCurve([[0, 0, 1], ["1/2", "3/2", 0], ["3/4", "-1/2", 0], [1, "1/7", 0]])
+    e_scaled, w_scaled, D = module._squared_error(F, X, [Fr(0), Fr(1)])
+    with ball.precision():
+        quick = ball.ratio_max_bound(e_scaled, w_scaled, D, 0.02, 400)
+    e_pow = module.bz.scaled_to_power(e_scaled, D)
+    w_pow = module.bz.scaled_to_power(w_scaled, D)
+    slow = module._exact_bisection(e_pow, w_pow, D, 0.02, 400, None) ** 2
+    sampled = _sup_sampled_sq(([[Fr(x) for x in p] for p in F.control_points], [Fr(w) for w in F.weights]),
+                              [[Fr(x) for x in p] for p in X.control_points], [Fr(0), Fr(1)])
+    quick, slow = (Fr(int(x.numerator), int(x.denominator)) for x in (quick, slow))
+    assert quick >= sampled and slow >= sampled
+    assert abs(quick - slow) <= max(quick, slow) * Fr(2, 100)
+    assert flint.ctx.prec == 53  # the working precision was restored

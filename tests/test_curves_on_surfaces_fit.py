@@ -222,3 +222,41 @@ def test_irrational_stationary_point_needs_no_cut():
     r = approximate(surface, domain, "1e-3", method="fit")
     assert r.distance_bound <= mpq(1, 1000)
     assert _max_true_error_sq(r, surface, domain) <= r.distance_bound**2
+
+
+# ----------------------------------------------------------------------------- ball first (issue 18)
+@pytest.mark.parametrize("rational", [False, True])
+def test_certify_catches_a_planted_violation_just_above_the_bound(rational):
+    """C = F + (delta, 0, 0): max |F - C| = delta exactly (the construction is the reference).
+    F is written with weights W(t) = 1 + t (rational route) or W = 1 (polynomial route);
+    delta = tol (1 + 2^-50) must not certify <= tol; delta = tol = 2^-12 must (polynomial
+    route: the hull bound is exact), delta = tol (1 - 2^-4) must (rational route: its leaf
+    bounds max(W^2 delta^2) / min(W^2) exceed delta^2 on every leaf, so the exact tie cannot
+    be proven, and the bisection stops within its factor 1 + rel)."""
+    from exactcagd.composition import ball
+
+    pts = np.array([[mpq(0), mpq(0), mpq(1)], [mpq(1, 3), mpq(2), mpq(0)], [mpq(1), mpq(-1), mpq(1, 5)]], dtype=object)
+    if rational:  # H = W F, W = 1 + t, by hand in degree 3 (product formula, notes 9.3)
+        p0, p1, p2 = pts
+        rows = [p0, (2 * p1 + 2 * p0) / 3, (p2 + 4 * p1) / 3, 2 * p2]
+        weights = [mpq(1), mpq(4, 3), mpq(5, 3), mpq(2)]
+        hom = np.array([list(r) + [w] for r, w in zip(rows, weights)], dtype=object)
+    else:
+        hom = np.concatenate([pts, np.full((3, 1), mpq(1), dtype=object)], axis=1)
+    tol = mpq(1, 2**12)
+    for delta, ok in ((tol * (1 + mpq(1, 2**50)), False), (tol * (1 - mpq(1, 2**4)) if rational else tol, True)):
+        ctrl = pts.copy()
+        ctrl[:, 0] = ctrl[:, 0] + delta
+        bound, decided_by = fit.certify(hom, ctrl, target=tol)
+        assert decided_by in (ball.BALL, ball.EXACT)
+        assert bound >= delta  # never below the true maximum
+        assert (bound <= tol) == ok
+    # the ball decides the ordinary case (not a property of the bound: of the speed)
+    ctrl = pts.copy()
+    ctrl[:, 0] = ctrl[:, 0] + tol / 2
+    assert fit.certify(hom, ctrl, target=tol)[1] == ball.BALL
+
+
+def test_result_reports_which_arithmetic_certified():
+    r = approximate(_bicubic(False), DOMAIN, "1e-3", method="fit")
+    assert sum(r.certified_by.values()) == len(r) and set(r.certified_by) <= {"ball", "exact"}

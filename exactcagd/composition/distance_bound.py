@@ -15,9 +15,11 @@ Bernstein form (products, notes 9.3; composition ``X o phi`` by route (b)).  The
 a bound on the Hausdorff distance of the two curve segments (every ``F(t)`` is within it of
 ``X(phi(t))`` on ``X``, and every ``X(s)`` is ``X(phi(t))`` for some ``t``).  ``max E`` is bounded
 by the convex-hull property: on every sub-interval, (max Bernstein coefficient of the
-numerator) / (min Bernstein coefficient of ``W^2``), refined by exact bisection of [0, 1]
+numerator) / (min Bernstein coefficient of ``W^2``), refined by bisection of [0, 1]
 until the bound is within a factor ``1 + rel`` of the values at the subdivision points.
-Arithmetic is exact (python-flint ``fmpq_poly``): the Bernstein coefficients of a
+The bisection runs first in ball arithmetic (python-flint ``arb``, outward rounded,
+:mod:`exactcagd.composition.ball`), and again in exact arithmetic (python-flint
+``fmpq_poly``) only when the balls do not certify ``target``: the Bernstein coefficients of a
 polynomial on ``[a, b]`` come from its power form by two exact compositions with linear
 polynomials.  To keep the numbers short, the Bernstein coefficients on [0, 1] are first
 rounded *outward* to 64-bit dyadic rationals (numerator up, ``W^2`` down): a polynomial
@@ -43,6 +45,7 @@ from ..errors import InputError, WeightError
 from ..exact import bernstein as bz
 from ..exact.scalars import from_fmpq, to_rational_array
 from ..geometry.bezier_curve import BezierCurve
+from . import ball
 from .fast import _fmpq, compose_homogeneous_fast, scaled, unscaled
 
 __all__ = ["distance_bound", "compose_with_reparametrization", "sqrt_upper", "bernstein_on"]
@@ -129,7 +132,8 @@ def _leaf_bound(e: list, w2: list):
     return max(from_fmpq(max(e)), mpq(0)) / from_fmpq(low)
 
 
-def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.02, max_leaves: int = 400, target=None) -> mpq:
+def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.02, max_leaves: int = 400, target=None,
+                   stats: dict | None = None) -> mpq:
     """Certified ``r >= sup_t |F(t) - X(phi(t))|`` (hence ``>=`` the Hausdorff distance).
 
     Parameters
@@ -149,6 +153,11 @@ def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.
     target : rational, optional
         Stop as soon as the bound is ``<= target`` or a value above ``target`` is found
         (an acceptance test needs no more; the bound is then less tight).
+    stats : dict, optional
+        Tally ``{"ball": n, "exact": m}`` of which arithmetic decided: the bisection runs in
+        ball arithmetic first (:func:`exactcagd.composition.ball.ratio_max_bound`), in exact
+        rationals only when the balls do not reach ``target`` (or ``W`` is not bounded away
+        from zero in balls).
 
     Raises
     ------
@@ -160,10 +169,21 @@ def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.
         raise InputError("phi must have Bernstein coefficients in [0, 1] starting with 0 and ending with 1")
     if F.dimension != cubic.dimension:
         raise InputError(f"dimensions differ: {F.dimension} vs {cubic.dimension}")
-    e_pow, w_pow, D = _squared_error(F, cubic, phi)
-    e_pow = bz.scaled_to_power(scaled([_round(x, True) for x in unscaled(e_pow, D)]), D)
-    w_pow = bz.scaled_to_power(scaled([_round(x, False) for x in unscaled(w_pow, D)]), D)
+    e_scaled, w_scaled, D = _squared_error(F, cubic, phi)
     target2 = None if target is None else mpq(to_rational_array([target])[0]) ** 2
+    with ball.precision():
+        quick = ball.ratio_max_bound(e_scaled, w_scaled, D, rel, max_leaves, target2)
+    if quick is not None and (target2 is None or quick <= target2):
+        ball.count(stats, ball.BALL)
+        return sqrt_upper(quick)
+    ball.count(stats, ball.EXACT)
+    e_pow = bz.scaled_to_power(scaled([_round(x, True) for x in unscaled(e_scaled, D)]), D)
+    w_pow = bz.scaled_to_power(scaled([_round(x, False) for x in unscaled(w_scaled, D)]), D)
+    return _exact_bisection(e_pow, w_pow, D, rel, max_leaves, target2)
+
+
+def _exact_bisection(e_pow, w_pow, D: int, rel, max_leaves: int, target2) -> mpq:
+    """The bisection of :func:`distance_bound` in exact rationals (flint ``fmpq``)."""
     lower = mpq(0)
     heap: list = []
     counter = 0

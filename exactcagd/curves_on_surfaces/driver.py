@@ -170,6 +170,7 @@ class _Solver:
         self.snap_bits = snap_bits
         self.max_segments = max_segments
         self.attempts = 0
+        self.certified_by: dict = {}  # piece bounds decided by ball / exact arithmetic
 
     # ------------------------------------------------------------------ local data
     def local_c1(self, item: _Item) -> np.ndarray:
@@ -222,7 +223,7 @@ class _Solver:
         limit = self.tol / L - delta
         if limit <= 0:
             return False
-        hb = hausdorff_bound(c1, proxy.domain_hom(), limit)
+        hb = hausdorff_bound(c1, proxy.domain_hom(), limit, stats=self.certified_by)
         if hb is None:
             return False
         item.approx, item.bound = approx, L * (hb + delta)
@@ -541,6 +542,7 @@ def approximate(
         closed=dcurve.closed,
         params=params,
         ends=ends,
+        certified_by=solver.certified_by,
     )
 
 

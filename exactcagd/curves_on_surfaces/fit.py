@@ -16,14 +16,17 @@ Hausdorff distance from above (every ``F(t)`` is within it of ``C(t)`` and conve
 3. **Exact conversion.**  The interior float control points are converted to their exact
    binary values; the end points are the exact joint points ``S(joint)``, shared by the two
    neighbours, so the chain is C0 *exactly*.
-4. **Certificate (exact rationals).**  For a polynomial ``F`` the Bernstein coefficients of
+4. **Certificate (ball first, then exact rationals).**  For a polynomial ``F`` the Bernstein coefficients of
    ``F - C`` (``C`` elevated to ``deg F``) bound ``|F(t) - C(t)|`` by the convex-hull
    property; for ``F = H / W`` with ``W > 0``, ``(H - W C) / W`` is bounded by the largest
    coefficient norm of ``H - W C`` over the smallest coefficient of ``W``.  Square roots are
    rounded upwards.  When this bound exceeds ``tol``, the squared error is bounded by exact
    bisection (:func:`exactcagd.composition.distance_bound.distance_bound`, which also handles
-   weights whose coefficients are not all positive).  Samples only *select* candidates; the
-   accepted bound is always one of these two proofs.
+   weights whose coefficients are not all positive).  The convex-hull bound is evaluated
+   first in ball arithmetic (python-flint ``arb``, :mod:`exactcagd.composition.ball`): when
+   the ball's upper end is below ``tol`` it is the proof; otherwise the exact route decides
+   (the result's ``certified_by`` counts both).  Samples only *select* candidates; the
+   accepted bound is always one of these proofs.
 
 Irrational knot-line crossings are carried by isolating intervals of width ``2^-64``
 (:mod:`.domain`): the tiny image arcs between two pieces are covered by the joint bound of
@@ -39,10 +42,12 @@ True
 from __future__ import annotations
 
 import time
+from functools import lru_cache
 
 import numpy as np
 from gmpy2 import mpq
 
+from ..composition import ball
 from ..composition.cubic_approx import bernstein_basis_float
 from ..composition.distance_bound import distance_bound, sqrt_upper
 from ..composition.fast import compose_homogeneous_fast
@@ -52,7 +57,7 @@ from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 from .field_curve import make_curve
 
-__all__ = ["fit_curve", "certified_bound", "approximate_fit", "sample_parameters", "MAX_DEGREE"]
+__all__ = ["fit_curve", "certify", "certified_bound", "approximate_fit", "sample_parameters", "MAX_DEGREE"]
 
 #: Highest degree tried before a piece is bisected (OpenCASCADE's default maximum).
 MAX_DEGREE = 14
@@ -80,13 +85,25 @@ def _float_points(hom: np.ndarray, t: np.ndarray) -> np.ndarray:
     return h[:, :-1] / h[:, -1:]
 
 
-def _least_squares(basis: np.ndarray, target: np.ndarray, p0: np.ndarray, p1: np.ndarray) -> np.ndarray:
-    """Control points of the degree-``d`` fit with fixed ends (``basis``: ``(samples, d + 1)``)."""
-    if basis.shape[1] == 2:
+@lru_cache(maxsize=64)
+def _basis(d: int, params: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """``(basis, pinv)``: the degree-``d`` Bernstein basis at the parameters (float64 bytes)
+    and the pseudo-inverse of its interior columns, read-only.  The parameters are fixed, so
+    this is computed once per degree instead of one ``lstsq`` (an SVD) per fit."""
+    basis = bernstein_basis_float(d, np.frombuffer(params))
+    pinv = np.linalg.pinv(basis[:, 1:-1]) if d >= 2 else np.zeros((0, basis.shape[0]))
+    for a in (basis, pinv):
+        a.flags.writeable = False
+    return basis, pinv
+
+
+def _least_squares(d: int, params: np.ndarray, target: np.ndarray, p0: np.ndarray, p1: np.ndarray) -> np.ndarray:
+    """Control points of the degree-``d`` least-squares fit to ``target`` with fixed ends."""
+    if d == 1:
         return np.vstack([p0, p1])
+    basis, pinv = _basis(d, params.tobytes())
     rhs = target - np.outer(basis[:, 0], p0) - np.outer(basis[:, -1], p1)
-    inner, *_ = np.linalg.lstsq(basis[:, 1:-1], rhs, rcond=None)
-    return np.vstack([p0, inner, p1])
+    return np.vstack([p0, pinv @ rhs, p1])
 
 
 def _exact(x: float) -> mpq:
@@ -112,6 +129,51 @@ def _hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
         return None
     num = bz.elevate(h, d) - bz.product(w.reshape(-1, 1), ctrl)
     return sqrt_upper(_max_norm_sq(num)) / low
+
+
+def _ball_hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
+    """:func:`_hull_bound` in ball arithmetic: a rational bound, ``None`` when undecided.
+
+    The same convex-hull formula evaluated on ``arb`` balls that contain the exact
+    coefficients (:mod:`exactcagd.composition.ball`); the upper end of the resulting ball
+    bounds the exact hull bound, so it bounds ``max |F - C|`` as well.
+    """
+    weights = hom[:, -1]
+    with ball.precision():
+        rows, kind = ball.bernstein_difference(hom, ctrl)
+        value = ball.max_norm_upper(rows)
+        if kind == 1:
+            low = min(weights)
+            if low <= 0:
+                return None
+            value = value / ball.to_arb(low)
+        return ball.upper_rational(value)
+
+
+def certify(hom: np.ndarray, ctrl: np.ndarray, target=None) -> tuple[mpq, str]:
+    """``(r, decided_by)``: :func:`certified_bound` and which arithmetic proved it.
+
+    With a ``target``, the convex-hull bound is first evaluated in ball arithmetic; when its
+    upper end is ``<= target`` that proves the certificate (``decided_by = "ball"``);
+    otherwise the bisection of :func:`~exactcagd.composition.distance_bound.distance_bound`
+    decides, itself in balls first and in exact rationals only if they are inconclusive
+    (``"exact"``).  Without a target: the exact hull bound, or (weights not all positive)
+    the bisection.
+    """
+    if target is None:
+        stats: dict = {}
+        hull = _hull_bound(hom, ctrl)
+        if hull is not None:
+            return hull, ball.EXACT
+        bound = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), stats=stats)
+        return bound, (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
+    hull = _ball_hull_bound(hom, ctrl)
+    if hull is not None and hull <= target:
+        return hull, ball.BALL
+    stats = {}
+    refined = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), target=target, stats=stats)
+    bound = refined if hull is None else min(hull, refined)
+    return bound, (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
 
 
 def certified_bound(hom: np.ndarray, ctrl: np.ndarray, target=None) -> mpq:
@@ -142,7 +204,7 @@ def certified_bound(hom: np.ndarray, ctrl: np.ndarray, target=None) -> mpq:
 
 # ----------------------------------------------------------------------------- one piece
 def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
-    """``(ctrl, bound)`` of the lowest degree that certifies ``<= tol``, or ``None``."""
+    """``(ctrl, bound, decided_by)`` of the lowest degree that certifies ``<= tol``, or ``None``."""
     fl = np.vectorize(float, otypes=[float])(hom)
     s_fit, s_check = sample_parameters()
     target_fit, target_check = _float_points(fl, s_fit), _float_points(fl, s_check)
@@ -151,8 +213,8 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     polynomial = all(x == hom[0, -1] for x in hom[:, -1])
     top = min(max_degree, n) if polynomial else max_degree
     for d in range(max(1, min(3, top)), top + 1):
-        fctrl = _least_squares(bernstein_basis_float(d, s_fit), target_fit, f0, f1)
-        err = max(np.linalg.norm(bernstein_basis_float(d, s).dot(fctrl) - t, axis=1).max()
+        fctrl = _least_squares(d, s_fit, target_fit, f0, f1)
+        err = max(np.linalg.norm(_basis(d, s.tobytes())[0].dot(fctrl) - t, axis=1).max()
                   for s, t in ((s_fit, target_fit), (s_check, target_check)))
         if not err <= float(tol):  # (also rejects NaN)
             continue
@@ -160,15 +222,16 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
         ctrl[1:-1] = np.vectorize(_exact, otypes=[object])(fctrl[1:-1])
         ctrl[0], ctrl[-1] = list(p0), list(p1)
         try:
-            bound = certified_bound(hom, ctrl, target=tol)
+            bound, decided_by = certify(hom, ctrl, target=tol)
         except WeightError:
             return None
         if bound <= tol:
-            return ctrl, bound
+            return ctrl, bound, decided_by
     return None
 
 
-def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segments: int = 10000) -> list:
+def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segments: int = 10000,
+              stats: dict | None = None) -> list:
     """Fit-then-certify one exact Bézier curve ``F`` on ``[0, 1]``.
 
     Parameters
@@ -180,6 +243,8 @@ def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segm
         Exact end points to interpolate (default ``F(0)``, ``F(1)``).
     max_degree : int
         Highest fitting degree before a bisection at the parametric midpoint.
+    stats : dict, optional
+        Tally of which arithmetic proved each piece's bound (``{"ball": n, "exact": m}``).
 
     Returns
     -------
@@ -199,6 +264,7 @@ def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segm
         found = _fit_piece(h, q0, q1, tol, max_degree)
         if found is not None:
             out.append(((a, b), found[0], found[1]))
+            ball.count(stats, found[2])
             if len(out) > max_segments:
                 raise ExactCAGDError(f"fit: more than max_segments = {max_segments} segments needed")
             continue
@@ -236,6 +302,7 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
     t_split = time.perf_counter()
     segments, domains, patches, params, ends, bounds = [], [], [], [], [], []
     cache: dict = {}
+    stats: dict = {}
     for ja, jb in _pieces(joints):
         k, ta = ja.hi
         _, tb = jb.lo
@@ -250,7 +317,7 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
             if id(j) not in cache:  # one exact point per joint, shared by both neighbours
                 cache[id(j)] = _surface_point(grid, key, j.point)
         p0, p1 = cache[id(ja)], cache[id(jb)]
-        for (a, b), ctrl, bound in fit_curve(hom, tol, p0, p1, max_degree, max_segments):
+        for (a, b), ctrl, bound in fit_curve(hom, tol, p0, p1, max_degree, max_segments, stats):
             segments.append(ctrl)
             bounds.append(bound)
             patches.append(key)
@@ -289,6 +356,7 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
         closed=dcurve.closed,
         params=params,
         ends=ends,
+        certified_by=stats,
     )
 
 

@@ -26,7 +26,9 @@ pairing only affects tightness: the ``tau_i`` are float foot points of
 ``C_1(t_i)`` on ``C_2`` (rounded to dyadic rationals, kept monotonic), and pieces
 whose bound is too large are bisected adaptively.  Every distance comparison is
 exact (rationals or ``Q(sqrt(Delta))``); square roots are bounded above by exact
-integer square roots.
+integer square roots.  For rational pieces the same formula is first evaluated in ball
+arithmetic (python-flint ``arb``, outward rounded; :func:`ball_piece_bound`), and exactly
+only when the ball's upper end does not certify the piece.
 
 >>> from gmpy2 import mpq
 >>> from exactcagd import BezierCurve
@@ -39,15 +41,17 @@ True
 
 from __future__ import annotations
 
+import flint
 import gmpy2
 import numpy as np
 from gmpy2 import mpq, mpz
 
+from ..composition import ball
 from ..exact import bernstein as bz
 from ..exact.quadratic import QuadraticNumber
 from ..exact.scalars import to_rational
 
-__all__ = ["hausdorff_bound", "piece_bound", "sqrt_upper", "upper", "float_hausdorff"]
+__all__ = ["hausdorff_bound", "piece_bound", "ball_piece_bound", "sqrt_upper", "upper", "float_hausdorff"]
 
 
 def upper(x) -> mpq:
@@ -162,6 +166,110 @@ def piece_bound(hom_a: np.ndarray, hom_b: np.ndarray) -> mpq:
     return best
 
 
+# ---------------------------------------------------------------------- ball arithmetic
+def _ball_rows(hom: np.ndarray) -> list | None:
+    """Homogeneous coefficients as ``arb`` balls, ``None`` if any is not rational."""
+    if not all(isinstance(x, (type(mpq(0)), int)) for x in hom.flat):
+        return None
+    return [[ball.to_arb(x) for x in row] for row in hom]
+
+
+def _ball_split(rows: list, t: flint.arb) -> tuple[list, list]:
+    """De Casteljau split of ball rows at ``t`` (every ball contains the exact value)."""
+    s = 1 - t
+    level = rows
+    left, right = [rows[0]], [rows[-1]]
+    while len(level) > 1:
+        level = [[s * x + t * y for x, y in zip(r0, r1)] for r0, r1 in zip(level[:-1], level[1:])]
+        left.append(level[0])
+        right.append(level[-1])
+    return left, right[::-1]
+
+
+def _ball_restrict(rows: list, a, b) -> list:
+    """:func:`restrict_fast` on ball rows (``0 <= a < b <= 1`` rational)."""
+    if b != 1:
+        rows, _ = _ball_split(rows, ball.to_arb(b))
+    if a != 0:
+        _, rows = _ball_split(rows, ball.to_arb(a) / ball.to_arb(b))
+    return rows
+
+
+def _ball_points(rows: list) -> list:
+    return [[x / row[-1] for x in row[:-1]] for row in rows]
+
+
+def _ball_sq(v) -> flint.arb:
+    return sum((x * x for x in v), flint.arb(0))
+
+
+def _ball_dist_segment_sq(p, a, b, ee) -> flint.arb | None:
+    """A ball whose upper end bounds ``dist(p, [a, b])^2`` (``ee = |b - a|^2 > 0``).
+
+    When the sign tests of :func:`_dist_segment_sq` are not decided by the balls, the
+    largest candidate value of the cases the balls allow is used: the exact distance is one
+    of them.
+    """
+    e = [y - x for x, y in zip(a, b)]
+    ap = [y - x for x, y in zip(a, p)]
+    s = sum((x * y for x, y in zip(ap, e)), flint.arb(0))
+    if s <= 0:
+        return _ball_sq(ap)
+    if s >= ee:
+        return _ball_sq([y - x for x, y in zip(b, p)])
+    inner = _ball_sq(ap) - s * s / ee
+    if s > 0 and s < ee:
+        return inner
+    # undecided: the exact distance is the candidate of a case the balls do not exclude
+    best = inner
+    if not s > 0:
+        best = best.max(_ball_sq(ap))
+    if not s < ee:
+        best = best.max(_ball_sq([y - x for x, y in zip(b, p)]))
+    return best
+
+
+def _ball_one_sided(pa: list, pb: list):
+    b0, b1 = pb[0], pb[-1]
+    ee = _ball_sq([y - x for x, y in zip(b0, b1)])
+    if not ee > 0:
+        return None  # a closed or (in balls) degenerate chord: the exact route decides
+    a_part = _ball_top(_ball_dist_segment_sq(q, b0, b1, ee) for q in pa)
+    if len(pb) <= 2:
+        return a_part, flint.arb(0)
+    delta = _ball_top(_ball_sq([y - x for x, y in zip(b0, q)]) - _ball_dot(q, b0, b1) ** 2 / ee for q in pb[1:-1])
+    return a_part, delta
+
+
+def _ball_dot(q, b0, b1) -> flint.arb:
+    return sum(((y - x) * (z - x) for x, y, z in zip(b0, q, b1)), flint.arb(0))
+
+
+def _ball_top(values) -> flint.arb:
+    best = None
+    for v in values:
+        best = v if best is None else best.max(v)
+    return best
+
+
+def ball_piece_bound(rows_a: list, rows_b: list) -> mpq | None:
+    """:func:`piece_bound` of two pieces given as ball rows; ``None`` when undecided.
+
+    The same formula on balls containing the exact control points (python-flint ``arb``,
+    :mod:`exactcagd.composition.ball`): the upper end of the result bounds the exact
+    :func:`piece_bound`, hence ``H(A, B)``.
+    """
+    pa, pb = _ball_points(rows_a), _ball_points(rows_b)
+    best = flint.arb(0)
+    for x, y in ((pa, pb), (pb, pa)):
+        parts = _ball_one_sided(x, y)
+        if parts is None:
+            return None
+        a_part, delta = parts
+        best = best.max(a_part.max(flint.arb(0)).sqrt() + delta.max(flint.arb(0)).sqrt())
+    return ball.upper_rational(best)
+
+
 # ---------------------------------------------------------------------- float helpers
 def _float_hom(hom) -> np.ndarray:
     return np.vectorize(float, otypes=[float])(hom)
@@ -227,12 +335,20 @@ def _dyadic(x: float, lo: mpq, hi: mpq, bits: int = 40) -> mpq:
     return q
 
 
-def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512):
+def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512, stats: dict | None = None):
     """Certified rational upper bound ``<= limit`` of ``H(A, B)``, or ``None``.
 
     ``None`` means "not certified below ``limit``" (the caller subdivides); it is
-    returned at once when the float estimate already exceeds ``limit``.
+    returned at once when the float estimate already exceeds ``limit``.  Each piece bound
+    is evaluated in ball arithmetic first and in exact arithmetic only when the ball's
+    upper end exceeds ``limit``; ``stats`` (a dict) counts which decided
+    (``{"ball": n, "exact": m}``, :mod:`exactcagd.composition.ball`).
     """
+    with ball.precision():
+        return _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
+
+
+def _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
     limit = to_rational(limit, where="limit")
     hf_a, hf_b = _float_hom(hom_a), _float_hom(hom_b)
     if float_hausdorff(hom_a, hom_b, 33) > float(limit) * (1 + 1e-9):
@@ -251,12 +367,20 @@ def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512)
     stack = list(zip(zip(ts[:-1], ts[1:]), zip(taus[:-1], taus[1:])))
     count = len(stack)
     best = mpq(0)
+    balls_a, balls_b = _ball_rows(hom_a), _ball_rows(hom_b)
     while stack:
         (ta, tb), (sa, sb) = stack.pop()
+        if balls_a is not None and balls_b is not None and sa < sb:
+            quick = ball_piece_bound(_ball_restrict(balls_a, ta, tb), _ball_restrict(balls_b, sa, sb))
+            if quick is not None and quick <= limit:
+                best = max(best, quick)
+                ball.count(stats, ball.BALL)
+                continue
         piece_b = restrict_fast(hom_b, sa, sb) if sa < sb else np.array([hom_b_at(sa)] * 2, dtype=object)
         bound = piece_bound(restrict_fast(hom_a, ta, tb), piece_b)
         if bound <= limit:
             best = max(best, bound)
+            ball.count(stats, ball.EXACT)
             continue
         if count >= max_pieces:
             return None

@@ -96,9 +96,9 @@ from ..exact import bernstein as bz
 from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
+from . import _horner_kernel
 from .fp_error import ETA, MIN_NORMAL, down, gamma_over, round_nearest, round_up, to_float_array
 from .fp_error import up_nonnegative
-from . import _horner_kernel
 
 __all__ = ["evaluate", "evaluate_surface", "METHODS"]
 
