@@ -81,25 +81,37 @@ def draw_figure(number: int, tol, out: Path = OUT) -> dict:
     report = {"figure": number, "surface degree": surface.degree, "curves": []}
     for k, curve in enumerate(fig_data["curves"]):
         color = f"C{k}"
-        for piece in domain_pieces(curve):
+        for j, piece in enumerate(domain_pieces(curve)):
             pts = sample_bezier(piece)
-            ax2.plot(pts[:, 0], pts[:, 1], color=color)
+            ax2.plot(pts[:, 0], pts[:, 1], color=color, label=f"K{k + 1}(t)" if j == 0 else None)
         degrees = []
-        for image, (lo, hi) in image_pieces(surface, curve):
+        for j, (image, (lo, hi)) in enumerate(image_pieces(surface, curve)):
             pts = sample_bezier(image, lo, hi)
-            ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2], color=color, lw=2)
             degrees.append(image.degree)
-        bounds = []
-        for approx in approximations(surface, curve, tol):
-            for seg in approx.segments:
-                pts = sample_bezier(seg.curve, k=60)
-                ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2], color="k", lw=0.8, ls="--")
-            bounds.append((len(approx.segments), float(approx.distance_bound)))
+            ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2], color=color, lw=2,
+                     label=f"F(K{k + 1}(t)) exact, degree {image.degree}" if j == 0 else None)
+        approxs = approximations(surface, curve, tol)
+        bounds = [(len(a.segments), float(a.distance_bound)) for a in approxs]
+        # one legend entry per curve for all its cubic approximations (one per Bezier piece of K)
+        label = (f"G1 cubics of K{k + 1}: {sum(n for n, _ in bounds)} pieces, bound "
+                 f"{max(b for _, b in bounds):.1e}")
+        for seg in (seg for a in approxs for seg in a.segments):
+            pts = sample_bezier(seg.curve, k=60)
+            ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2], color="k", lw=0.9, ls="--", label=label)
+            label = None
         report["curves"].append({"image degrees": degrees, "cubics / certified bound": bounds})
     ax2.set_xlim(0, 1)
     ax2.set_ylim(0, 1)
     ax2.set_aspect("equal")
+    ax2.set_xlabel("u")
+    ax2.set_ylabel("v")
+    ax2.legend(fontsize=8, loc="best")
     ax2.set_title("domain curves K(t) in [0,1]^2")
+    ax3.set_xlabel("x")
+    ax3.set_ylabel("y")
+    ax3.set_zlabel("z")
+    ax3.plot([], [], color="0.8", lw=0.6, label="surface F(u, v) (iso-curves)")
+    ax3.legend(fontsize=7, loc="upper left", bbox_to_anchor=(-0.05, 1.0))
     ax3.set_title(f"F(K(t)) exact (colour), cubic approx. (dashed, tol {tol})", fontsize=9)
     fig.suptitle(fig_data["title"])
     out.mkdir(parents=True, exist_ok=True)
@@ -124,15 +136,20 @@ def draw_figure9(tol, out: Path = OUT) -> dict:
     report = {"figure": 9, "lattice degree": lattice.degree, "curves": []}
     for k, curve in enumerate(data["curves"]):
         pts = sample_bezier(curve)
-        left.plot(pts[:, 0], pts[:, 1], color=f"C{k}", lw=2)
+        left.plot(pts[:, 0], pts[:, 1], color=f"C{k}", lw=2, label=f"curve {k + 1}, degree {curve.degree}")
         image = ffd(lattice, curve)
         pts = sample_bezier(image)
-        right.plot(pts[:, 0], pts[:, 1], color=f"C{k}", lw=2)
         approx = approximate_cubic_curve(image, tol)
-        for seg in approx.segments:
+        right.plot(pts[:, 0], pts[:, 1], color=f"C{k}", lw=2,
+                   label=f"image {k + 1}, degree {image.degree}; {len(approx.segments)} cubic(s), bound {float(approx.distance_bound):.1e}")
+        for j, seg in enumerate(approx.segments):
             p = sample_bezier(seg.curve, k=60)
-            right.plot(p[:, 0], p[:, 1], "k--", lw=0.8)
+            right.plot(p[:, 0], p[:, 1], "k--", lw=0.8, label="G1 cubic approximations" if (k, j) == (0, 0) else None)
         report["curves"].append({"domain degree": curve.degree, "image degree": image.degree, "true degree": image.true_degree(), "cubics": len(approx.segments), "bound": float(approx.distance_bound)})
+    for ax in (left, right):
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.legend(fontsize=7, loc="best")
     fig.suptitle(data["title"])
     out.mkdir(parents=True, exist_ok=True)
     fig.savefig(out / "figure9.png", dpi=110)

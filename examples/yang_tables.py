@@ -136,18 +136,41 @@ def plot(name: str, method: str, tol: str, surface, curve, result) -> None:
         p = _float_curve(seg, ts)
         ax.plot(p[:, 0], p[:, 1], color=colors.get(kind, "k"), lw=0.9)
         ax.plot(p[[0, -1], 0], p[[0, -1], 1], "k.", ms=1.5)
+    for kind in sorted(set(result.kinds)):  # one legend entry per segment kind
+        ax.plot([], [], color=colors.get(kind, "k"), lw=0.9, label=f"{kind} ({result.kinds.count(kind)})")
+    ax.plot([], [], "k.", ms=3, label="segment joints")
     ax.set_xlim(pts[:, 0].min() - 0.03, pts[:, 0].max() + 0.03)
     ax.set_ylim(pts[:, 1].min() - 0.03, pts[:, 1].max() + 0.03)
     ax.set_aspect("equal")
+    ax.set_xlabel("u")
+    ax.set_ylabel("v")
+    ax.legend(fontsize=7, loc="center")
     ax.set_title(f"{name}: {method}, eps_D = {tol}: {len(result)} segments", fontsize=9)
     ax3 = fig.add_subplot(1, 2, 2, projection="3d")
-    for seg in result.segments:
+    _draw_surface(ax3, surface)
+    for seg, kind in zip(result.segments, result.kinds):
         p = _float_curve(seg, ts)
-        ax3.plot(p[:, 0], p[:, 1], p[:, 2], lw=0.8)
-    ax3.set_title(f"image on S: degree {result.degree}, {result.continuity}", fontsize=9)
+        ax3.plot(p[:, 0], p[:, 1], p[:, 2], color=colors.get(kind, "k"), lw=1.0)
+    for kind in sorted(set(result.kinds)):
+        ax3.plot([], [], color=colors.get(kind, "k"), lw=1.0, label=f"image of {kind} segments")
+    ax3.set_xlabel("x")
+    ax3.set_ylabel("y")
+    ax3.set_zlabel("z")
+    ax3.legend(fontsize=7, loc="upper left")
+    ax3.set_title(f"image on S: degree {result.degree}, {result.continuity}, bound {float(result.distance_bound):.1e}", fontsize=9)
     fig.tight_layout()
     fig.savefig(OUT / f"{name}_{method}_{tol}.png", dpi=90)
     plt.close(fig)
+
+
+def _draw_surface(ax3, surface, lines: int = 17) -> None:
+    """The surface as a light wireframe of float samples (plots only), with a legend entry."""
+    from exactcagd.numeric.sampling import sample_surface
+
+    (u0, u1), (v0, v1) = surface.domain
+    grid = sample_surface(surface, np.linspace(float(u0), float(u1), lines), np.linspace(float(v0), float(v1), lines))
+    ax3.plot_wireframe(grid[..., 0], grid[..., 1], grid[..., 2], color="0.75", lw=0.4)
+    ax3.plot([], [], color="0.75", lw=0.4, label="surface S (wireframe)")
 
 
 def _float_curve(curve, ts) -> np.ndarray:
