@@ -108,6 +108,22 @@ def sample_points_on_surface(surface, uv: np.ndarray) -> np.ndarray:
     return values[:, :-1] / values[:, -1:]
 
 
+def curve_on_surface_evaluator(surface, curve):
+    """A function ``ts -> S(D(ts))`` (float points, shape (len(ts), d)) whose control data
+    are converted to floats once, for callers that evaluate many times."""
+    curve_knots, p, curve_points, curve_weights = _curve_data(curve)
+    ku, kv, (l, m), net, w = _surface_data(surface)
+    hom = np.concatenate([net * w[..., None], w[..., None]], axis=-1)
+
+    def image(ts: np.ndarray) -> np.ndarray:
+        B = basis_matrix(curve_knots, p, ts) * curve_weights[None, :]
+        uv = (B @ curve_points) / B.sum(axis=1)[:, None]
+        values = np.einsum("ai,ijk,aj->ak", basis_matrix(ku, l, uv[:, 0]), hom, basis_matrix(kv, m, uv[:, 1]))
+        return values[:, :-1] / values[:, -1:]
+
+    return image
+
+
 def sample_curve_on_surface(surface, curve, samples: int = 400) -> np.ndarray:
     """Float points of ``F(K(t))`` at ``samples`` parameters (no composition needed)."""
     lo, hi = parameter_domain(curve)

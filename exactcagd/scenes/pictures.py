@@ -200,14 +200,10 @@ def approximation_error_profile(result, surface, curve, samples: int = 400):
 
     per_segment = max(16, samples // max(1, len(result.segments)))
     local = np.linspace(0.0, 1.0, per_segment)
-    parameters, distances, joints = [], [], []
-    for k, segment in enumerate(result.segments):
-        gaps, ts = distance_to_curve_on_surface(surface, curve, sample_curve(segment, local))
-        parameters.append(ts)
-        distances.append(gaps)
-        if k:
-            joints.append(ts[0])
-    return np.concatenate(parameters), np.concatenate(distances), np.array(joints)
+    points = np.concatenate([sample_curve(segment, local) for segment in result.segments])
+    distances, parameters = distance_to_curve_on_surface(surface, curve, points)
+    joints = parameters[per_segment::per_segment]  # the first sample of every later segment
+    return parameters, distances, joints
 
 
 def _tolerance(spec: dict):
