@@ -7,6 +7,8 @@ import os
 
 import jsonschema
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from exactcagd.cli import main
 from exactcagd.errors import InputError, OutputError
@@ -226,3 +228,25 @@ def test_standard_suite_is_reproducible_and_valid(tmp_path):
         validator = jsonschema.Draft202012Validator(json.loads((tmp_path / "a" / manifest["schemas"][kind]["file"]).read_text()))
         for line in (tmp_path / "a" / f"{kind}.jsonl").read_text().splitlines():
             validator.validate(json.loads(line))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(1, 5000), st.integers(1, 64))
+def test_batches_partition_the_indices_in_order(count, workers):
+    from exactcagd.refdata.stream import MAX_BATCH, plan_batches
+
+    batches = plan_batches("roots", "random", count, 0, (3,), workers)
+    assert [i for b in batches for i in range(b.start, b.stop)] == list(range(count))
+    assert all(1 <= b.size <= MAX_BATCH for b in batches)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.integers(-(2**40), 2**40), st.integers(0, 10**6), st.sampled_from(["roots", "subdivision", "degree_elevation"]))
+def test_a_record_depends_only_on_its_identity(seed, index, kind):
+    from exactcagd.refdata.kinds import make_record
+    from exactcagd.refdata.stream import BatchSpec, batch_lines, record_line
+
+    spec = KINDS[kind]
+    line = record_line(make_record(kind, "random", seed, index, spec.default_degrees))
+    assert batch_lines(BatchSpec(kind, "random", seed, spec.default_degrees, index, index + 1)) == [line]
+    assert json.loads(line)["id"] == f"{kind}/random/{index}"
