@@ -460,3 +460,50 @@ def test_approximation_input_errors():
         enclose(pole, BezierCurve([[1], [1]]), pieces=1)
     with pytest.raises(DimensionError):
         enclose(BezierCurve([[0], [1]]), BezierCurve([[0, 0], [1, 1]]))
+
+
+# ---------------------------------------------------------------------------- directed rounding (issue 18)
+def _gmpy2_directed(op, a, b):
+    """Reference: MPFR's correctly rounded operation in RoundDown / RoundUp (53-bit IEEE contexts)."""
+    import gmpy2
+
+    out = []
+    for mode in (gmpy2.RoundDown, gmpy2.RoundUp):
+        ctx = gmpy2.ieee(64)
+        ctx.round = mode
+        out.append(float(getattr(ctx, op)(gmpy2.mpfr(a), gmpy2.mpfr(b))))
+    return out
+
+
+_any_float = st.one_of(
+    st.floats(allow_nan=False),
+    st.floats(allow_nan=False, min_value=-1e-300, max_value=1e-300),
+    st.sampled_from([0.0, -0.0, 5e-324, -5e-324, 2.0**-1022, 2.0**960, 2.0**-960, 1.7976931348623157e308]),
+)
+
+
+@settings(max_examples=400, deadline=None)
+@given(_any_float, _any_float, _any_float, _any_float)
+def test_float_interval_endpoints_are_the_correctly_directed_roundings(a, b, c, d):
+    """The error-free-transformation arithmetic gives exactly MPFR's directed roundings
+    (same bits, signed zeros included) for [a, b] op [c, d]."""
+    lo1, hi1 = sorted((a, b))
+    lo2, hi2 = sorted((c, d))
+    x, y = FloatInterval(lo1, hi1), FloatInterval(lo2, hi2)
+
+    def same(u, v):
+        return (math.isnan(u) and math.isnan(v)) or (u == v and math.copysign(1, u) == math.copysign(1, v))
+
+    s = x + y
+    assert same(s.lo, _gmpy2_directed("add", lo1, lo2)[0]) and same(s.hi, _gmpy2_directed("add", hi1, hi2)[1])
+    t = x - y
+    assert same(t.lo, _gmpy2_directed("sub", lo1, hi2)[0]) and same(t.hi, _gmpy2_directed("sub", hi1, lo2)[1])
+    corners = [_gmpy2_directed("mul", p, q) for p in (lo1, hi1) for q in (lo2, hi2)]
+    if not any(math.isnan(v) for pair in corners for v in pair):
+        m = x * y
+        assert m.lo == min(p[0] for p in corners) and m.hi == max(p[1] for p in corners)
+    if not lo2 <= 0 <= hi2:
+        corners = [_gmpy2_directed("div", p, q) for p in (lo1, hi1) for q in (lo2, hi2)]
+        if not any(math.isnan(v) for pair in corners for v in pair):
+            r = x / y
+            assert r.lo == min(p[0] for p in corners) and r.hi == max(p[1] for p in corners)

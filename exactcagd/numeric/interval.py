@@ -266,6 +266,70 @@ def _ru(op: str, a: float, b: float) -> float:
     return float(getattr(_UP, op)(mpfr(a), mpfr(b)))
 
 
+# Directed rounding without a rounding-mode switch: the round-to-nearest result ``r`` and
+# its exact error ``e`` (error-free transformations: Knuth's TwoSum, Dekker's TwoProduct --
+# Ogita, Rump & Oishi, SIAM J. Sci. Comput. 26 (2005), Algorithms 3.1-3.3) decide the
+# directed roundings: ``exact = r + e``, so round-down is ``r`` if ``e >= 0`` else the float
+# below ``r``, and symmetrically upward.  These identities hold while no operand or result
+# overflows and no product underflows; outside that range the gmpy2 contexts decide.
+_SPLIT = 134217729.0  # 2^27 + 1 (Veltkamp's splitting constant for binary64)
+_SAFE_HI = 2.0**960  # |operands| and |results| below: no overflow in splitting or products
+_SAFE_LO = 2.0**-960  # |products| and |quotients| above: their errors are representable
+
+
+def _directed(r: float, e: float) -> tuple[float, float]:
+    if e > 0:
+        return r, math.nextafter(r, math.inf)
+    if e < 0:
+        return math.nextafter(r, -math.inf), r
+    return r, r
+
+
+def _two_product_error(a: float, b: float, p: float) -> float:
+    """``a b - p`` exactly (Dekker), for ``p = fl(a b)`` inside the safe range."""
+    c = _SPLIT * a
+    ah = c - (c - a)
+    al = a - ah
+    c = _SPLIT * b
+    bh = c - (c - b)
+    bl = b - bh
+    return ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _add_both(a: float, b: float) -> tuple[float, float]:
+    """``(round_down(a + b), round_up(a + b))``."""
+    s = a + b
+    if -_SAFE_HI < s < _SAFE_HI and -_SAFE_HI < a < _SAFE_HI and -_SAFE_HI < b < _SAFE_HI:
+        if s == 0.0 and not (a == 0.0 and b == 0.0 and math.copysign(1.0, a) == math.copysign(1.0, b)):
+            return -0.0, 0.0  # an exact zero sum is -0 rounding down, +0 rounding up (IEEE 754 6.3)
+        bb = s - a
+        return _directed(s, (a - (s - bb)) + (b - bb))
+    return _rd("add", a, b), _ru("add", a, b)
+
+
+def _mul_both(a: float, b: float) -> tuple[float, float]:
+    """``(round_down(a b), round_up(a b))``."""
+    p = a * b
+    if a == 0.0 or b == 0.0:
+        if math.isfinite(a) and math.isfinite(b):
+            return p, p  # an exact zero (its sign does not matter for an endpoint)
+    elif _SAFE_LO < abs(p) < _SAFE_HI and abs(a) < _SAFE_HI and abs(b) < _SAFE_HI:
+        return _directed(p, _two_product_error(a, b, p))
+    return _rd("mul", a, b), _ru("mul", a, b)
+
+
+def _div_both(a: float, b: float) -> tuple[float, float]:
+    """``(round_down(a / b), round_up(a / b))`` for ``b != 0``."""
+    q = a / b
+    if _SAFE_LO < abs(q) < _SAFE_HI and _SAFE_LO < abs(b) < _SAFE_HI and _SAFE_LO < abs(a) < _SAFE_HI:
+        p = q * b
+        residual = (a - p) - _two_product_error(q, b, p)  # a - q b: a - p is exact (Sterbenz)
+        return _directed(q, residual if b > 0 else -residual)  # a/b - q = residual / b
+    if a == 0.0 and math.isfinite(b):
+        return q, q
+    return _rd("div", a, b), _ru("div", a, b)
+
+
 class FloatInterval:
     """A closed interval with binary64 endpoints and outward-rounded arithmetic.
 
@@ -360,7 +424,7 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        return FloatInterval._make(_rd("add", self._lo, o._lo), _ru("add", self._hi, o._hi))
+        return FloatInterval._make(_add_both(self._lo, o._lo)[0], _add_both(self._hi, o._hi)[1])
 
     __radd__ = __add__
 
@@ -368,7 +432,7 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        return FloatInterval._make(_rd("sub", self._lo, o._hi), _ru("sub", self._hi, o._lo))
+        return FloatInterval._make(_add_both(self._lo, -o._hi)[0], _add_both(self._hi, -o._lo)[1])
 
     def __rsub__(self, other):
         o = _float_operand(other)
@@ -378,9 +442,8 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        pairs = [(a, b) for a in {self._lo, self._hi} for b in {o._lo, o._hi}]
-        lows = [_rd("mul", a, b) for a, b in pairs]
-        highs = [_ru("mul", a, b) for a, b in pairs]
+        both = [_mul_both(a, b) for a in {self._lo, self._hi} for b in {o._lo, o._hi}]
+        lows, highs = [x for x, _ in both], [y for _, y in both]
         if any(math.isnan(x) for x in lows + highs):  # 0 * inf: the set product is unbounded
             return FloatInterval._make(-math.inf, math.inf)
         return FloatInterval._make(min(lows), max(highs))
@@ -393,9 +456,8 @@ class FloatInterval:
             return NotImplemented
         if o._lo <= 0 <= o._hi:
             raise DomainError(f"division by the interval {o!r}, which contains 0")
-        pairs = [(a, b) for a in {self._lo, self._hi} for b in {o._lo, o._hi}]
-        lows = [_rd("div", a, b) for a, b in pairs]
-        highs = [_ru("div", a, b) for a, b in pairs]
+        both = [_div_both(a, b) for a in {self._lo, self._hi} for b in {o._lo, o._hi}]
+        lows, highs = [x for x, _ in both], [y for _, y in both]
         if any(math.isnan(x) for x in lows + highs):  # inf / inf
             return FloatInterval._make(-math.inf, math.inf)
         return FloatInterval._make(min(lows), max(highs))
