@@ -147,8 +147,15 @@ def _compute_image(surface, curve, product):
     if isinstance(surface, BezierSurface) and isinstance(curve, BezierCurve):
         from ..composition import compose
 
+        from ..composition.splines import ComposedPiece, SplineComposition
+        from ..exact.scalars import to_rational
+
         image = compose(surface, curve, reduce=bool(product.get("reduce", False)))
-        return [image], {"summary": f"1 piece, degree {image.degree} (true degree {image.true_degree()})"}
+        # the same output shape as a B-spline surface's image: one exact piece over [0, 1]
+        zero, one = to_rational(0), to_rational(1)
+        piece = ComposedPiece(image, (zero, one), (zero, one), (0, 0), ((zero, one), (zero, one)), 0)
+        result = SplineComposition([piece], [], (zero, one))
+        return result, {"summary": f"1 piece, degree {image.degree} (true degree {image.true_degree()})"}
     from ..composition.splines import compose_spline
 
     result = compose_spline(surface, curve)

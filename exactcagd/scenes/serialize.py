@@ -65,6 +65,8 @@ def to_json_value(obj):
         return obj
     if hasattr(obj, "to_dict"):
         data = obj.to_dict()
+        if isinstance(data, dict) and isinstance(data.get("pieces"), list):
+            _piece_companions(obj, data)
         for key in ("segments", "domain_segments"):  # keep the curve objects: they get float companions
             items = getattr(obj, key, None)
             if isinstance(data, dict) and key in data and isinstance(items, list):
@@ -75,6 +77,21 @@ def to_json_value(obj):
     if type(obj).__module__.startswith("sympy"):
         return str(obj.as_expr() if hasattr(obj, "as_expr") else obj)
     raise TypeError(f"no exact JSON form for {type(obj).__name__}")
+
+
+def _piece_companions(obj, data: dict) -> None:
+    """Pieces of an image curve (``compose_spline``): each piece's curve keeps its object (so it
+    gets ``control_points_float``), each exact interval end and joint parameter gets ``"float"``."""
+    pieces = getattr(obj, "pieces", None) or []
+    for item, piece in zip(data["pieces"], pieces):
+        if isinstance(item, dict) and "curve" in item and isinstance(getattr(piece, "curve", None), BezierCurve):
+            item["curve"] = piece.curve
+            for entry, value in zip(item.get("interval", []), getattr(piece, "interval", ())):
+                entry["float"] = to_float(value) if isinstance(value, Rational) else float(value)
+    for item, joint in zip(data.get("joints") or [], getattr(obj, "joints", None) or []):
+        if isinstance(item, dict) and isinstance(item.get("parameter"), dict):
+            value = joint.parameter
+            item["parameter"]["float"] = to_float(value) if isinstance(value, Rational) else float(value)
 
 
 def dumps(obj) -> str:
