@@ -60,22 +60,30 @@ __all__ = [
 
 METHODS = ("subdivision", "interval", "clipping", "exact", "auto")
 #: bounds of the float routes' default work bound (pairs of pieces examined); in between
-#: it is ``WORK_PER_SECOND`` times the exact route's estimated cost (:func:`exact_cost`):
-#: one step costs 0.1-1 ms, so a float route never takes much longer than the exact
-#: route would (measured: random degree-10 pairs need 20-700 steps, degree 15 up to 5000)
-MIN_WORK, MAX_WORK, WORK_PER_SECOND = 200, 5_000, 2_000
-
+#: it is ``WORK_PER_SECOND / n`` times the exact route's estimated cost (:func:`exact_cost`,
+#: ``n`` the larger degree): one step costs about ``n / 4000`` s (measured: 0.5 ms at
+#: degree 3-10, 2 ms for the interval method at degree 20), so a float route spends at
+#: most about the exact route's time before handing over to it (random degree-10 pairs
+#: need 20-700 steps, degree 15 up to 5000)
+MIN_WORK, MAX_WORK, WORK_PER_SECOND = 200, 5_000, 4_000
 
 #: ``method="auto"`` takes the exact route while its estimated cost is below this (seconds):
 #: measured (benchmarks/results/bench_intersection.md) the exact route answers random
 #: pairs up to degree ~12 and every hard fixture faster than clipping, clipping is
-#: ahead from degree ~15 (degree 20: ~1 s against ~8 s)
+#: ahead from degree ~15 (degree 20: ~1 s against ~4-8 s)
 AUTO_EXACT_SECONDS = 0.5
 
 
 def default_work(n1: int, n2: int) -> int:
-    """The float routes' work bound for curves of degrees ``n1, n2``."""
-    return int(min(MAX_WORK, max(MIN_WORK, WORK_PER_SECOND * exact_cost(n1, n2))))
+    """The float routes' work bound for curves of degrees ``n1, n2``.
+
+    >>> default_work(3, 3), default_work(20, 20)
+    (200, 1602)
+    """
+    n = max(n1, n2, 1)
+    return int(min(MAX_WORK, max(MIN_WORK, WORK_PER_SECOND * exact_cost(n1, n2) / n)))
+
+
 _ROUTES = {"subdivision": _subdivision, "interval": _interval_method, "clipping": _clipping}
 
 
