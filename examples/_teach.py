@@ -1,8 +1,14 @@
-"""Shared helpers of the teaching scripts (examples/teach_*.py): float sampling for plots
-and the output folder examples/output/teach/ (git-ignored)."""
+"""Shared helpers of the teaching scripts (examples/teach_*.py): float sampling for plots,
+the output folder examples/output/teach/ (git-ignored; ``EXACTCAGD_EXAMPLES_OUT`` moves it,
+as the documentation build does) and :func:`tex`, which prints a derivation step and, for the
+documentation, records it typeset (sympy LaTeX) in ``<script>.steps.json`` next to the pictures."""
 
 from __future__ import annotations
 
+import atexit
+import json
+import os
+import sys
 from math import comb
 from pathlib import Path
 
@@ -12,7 +18,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (re-exported for the scripts)
 import numpy as np  # noqa: E402
 
-OUT = Path(__file__).resolve().parent / "output" / "teach"
+OUT = Path(os.environ.get("EXACTCAGD_EXAMPLES_OUT") or Path(__file__).resolve().parent / "output" / "teach")
+#: the derivation as the docs show it: [{"title": ..., "items": [{"label", "latex"}]}]
+STEPS: list[dict] = []
 
 
 def out_path(name: str) -> Path:
@@ -36,6 +44,46 @@ def polygon(curve) -> np.ndarray:
 
 def step(title: str) -> None:
     print(f"\n== {title}")
+    STEPS.append({"title": title, "items": []})
+
+
+def tex(label: str, value) -> None:
+    """Print ``label = value`` and record the value typeset by sympy for the docs page.
+
+    ``value`` is anything sympy understands (expressions, matrices, mpq through ``fmt``).
+    """
+    import sympy as sp
+
+    print(label, "=", fmt(value))
+    try:
+        latex = sp.latex(sp.sympify(_sympy_ready(value)))
+    except (sp.SympifyError, TypeError, AttributeError):
+        latex = r"\text{" + fmt(value).replace("_", r"\_") + "}"
+    if not STEPS:
+        STEPS.append({"title": "", "items": []})
+    STEPS[-1]["items"].append({"label": label, "latex": latex})
+
+
+def _sympy_ready(value):
+    """mpq -> sympy Rational, recursively (sympify does not know gmpy2 types)."""
+    import sympy as sp
+    from gmpy2 import mpq
+
+    if isinstance(value, type(mpq(0))):
+        return sp.Rational(int(value.numerator), int(value.denominator))
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, (list, tuple)):
+        items = [_sympy_ready(v) for v in value]
+        return sp.Matrix([items]) if items and not isinstance(items[0], (list, sp.MatrixBase)) else sp.Matrix(items)
+    return value
+
+
+@atexit.register
+def _write_steps() -> None:
+    if STEPS and os.environ.get("EXACTCAGD_EXAMPLES_OUT"):
+        name = Path(sys.argv[0]).stem
+        (Path(OUT) / f"{name}.steps.json").write_text(json.dumps(STEPS, indent=1))
 
 
 def fmt(x):

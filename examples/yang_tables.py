@@ -253,13 +253,30 @@ def markdown(results: dict, tolerances, quick: bool, wall: float) -> str:
     return "\n".join(lines) + "\n"
 
 
+def picture(name: str, method: str, tol: str, out: Path = OUT) -> Path:
+    """Compute and draw one result (model, method, eps_D) into ``out``; no tables."""
+    global OUT
+    ((surface, curve, _how),) = models([name]).values()
+    result = approximate(surface, curve, tol, method, angle_tol=1)
+    OUT = out
+    out.mkdir(parents=True, exist_ok=True)
+    plot(name, method, tol, surface, curve, result)
+    print(f"{name} {method} eps_D={tol}: {len(result)} segments, degree {result.degree}, "
+          f"bound {float(result.distance_bound):.3e}; wrote {out / f'{name}_{method}_{tol}.png'}")
+    return out / f"{name}_{method}_{tol}.png"
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="face and venus, eps_D in {1e-1, 1e-3}")
     parser.add_argument("--budget", type=float, default=None, help="seconds allowed per single run")
     parser.add_argument("--no-pictures", action="store_true")
     parser.add_argument("--no-commit-copy", action="store_true", help="do not rewrite benchmarks/results/full/yang_tables.md")
+    parser.add_argument("--picture", metavar="MODEL:METHOD:EPS", help="only draw one result, e.g. face:parabola:1e-2 (the docs gallery)")
+    parser.add_argument("--out", help="folder for --picture's PNG (default examples/output/yang)")
     args = parser.parse_args(argv)
+    if args.picture:
+        return picture(*args.picture.split(":"), out=Path(args.out) if args.out else OUT)
     OUT.mkdir(parents=True, exist_ok=True)
     names = ("face", "venus") if args.quick else ("face", "venus", "roof")
     tolerances = ("1e-1", "1e-3") if args.quick else TOLERANCES

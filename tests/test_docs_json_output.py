@@ -67,3 +67,17 @@ def test_image_curve_on_a_bspline_surface_has_the_same_shape(tmp_path):
     assert any(not p["exact"] for p in result["pieces"]), "knot-line crossings at irrational parameters expected"
     for joint in result["joints"]:
         assert joint["parameter"]["float"] == float(sp.N(_exact_value(joint["parameter"]), 40))
+
+
+def test_approximation_bound_and_tolerance_have_float_companions(tmp_path):
+    scene = {"scene": {"name": "apx", "float_policy": "reject"}, "surfaces": {"s": BSPLINE}, "curves": {"k": CURVE},
+             "products": [{"kind": "approximation", "name": "a", "surface": "s", "curve": "k", "tol": "1/100"}]}
+    path = tmp_path / "apx.json"
+    path.write_text(json.dumps(scene))
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--no-cache"]) == 0
+    result = json.loads((tmp_path / "out" / "apx" / "a.json").read_text())["result"]
+    assert result["tolerance"] == "1/100" and result["tolerance_float"] == 0.01
+    assert result["distance_bound_float"] == float(Fraction(result["distance_bound"]))
+    assert 0 < result["distance_bound_float"] <= 0.01
+    for segment in result["segments"]:
+        assert len(segment["control_points_float"]) == segment["degree"] + 1

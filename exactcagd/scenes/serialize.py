@@ -67,6 +67,9 @@ def to_json_value(obj):
         data = obj.to_dict()
         if isinstance(data, dict) and isinstance(data.get("pieces"), list):
             _piece_companions(obj, data)
+        if isinstance(data, dict):  # "p/q" fields of the object (tolerance, distance_bound): float companions
+            for key in [k for k, v in data.items() if isinstance(v, str) and isinstance(getattr(obj, k, None), Rational)]:
+                data[f"{key}_float"] = to_float(getattr(obj, key))
         for key in ("segments", "domain_segments"):  # keep the curve objects: they get float companions
             items = getattr(obj, key, None)
             if isinstance(data, dict) and key in data and isinstance(items, list):
