@@ -15,9 +15,9 @@ from hypothesis import strategies as st
 
 from exactcagd.exact.algebraic import real_roots
 from exactcagd.refdata.kinds import KINDS, make_record
+from exactcagd.refdata.manifest import schema_path
 from exactcagd.refdata.records import algebraic, exact, f64, f64_float
 from exactcagd.refdata.schemagen import kind_schema, schema_text
-from exactcagd.refdata.manifest import schema_path
 
 t = sp.Symbol("t")
 
@@ -106,8 +106,8 @@ def test_surface_eval_against_sympy_normal():
         inp, ans = rec["input"], rec["answer"]
         net, w = inp["control_points"], inp.get("weights")
         l, m = len(net) - 1, len(net[0]) - 1
-        B = lambda n, i, x: sp.binomial(n, i) * x**i * (1 - x) ** (n - i)  # noqa: E731
-        wt = lambda i, j: Q(w[i][j]) if w else 1  # noqa: E731
+        B = lambda n, i, x: sp.binomial(n, i) * x**i * (1 - x) ** (n - i)
+        wt = lambda i, j: Q(w[i][j]) if w else 1
         den = sum(B(l, i, u) * B(m, j, v) * wt(i, j) for i in range(l + 1) for j in range(m + 1))
         S = sp.Matrix([sum(B(l, i, u) * B(m, j, v) * wt(i, j) * Q(net[i][j][k]) for i in range(l + 1) for j in range(m + 1)) / den for k in range(3)])
         N = S.diff(u).cross(S.diff(v))
@@ -166,7 +166,7 @@ def test_elevation_and_subdivision_against_sympy():
             continue
         c = Q(inp["param"])
         s = sp.Rational(2, 7)
-        full = lambda x: _bernstein(inp["control_points"], inp.get("weights"), x)  # noqa: E731
+        full = lambda x: _bernstein(inp["control_points"], inp.get("weights"), x)
         assert _bernstein(ans["left"]["control_points"], ans["left"].get("weights"), s) == full(c * s)
         assert _bernstein(ans["right"]["control_points"], ans["right"].get("weights"), s) == full(c + (1 - c) * s)
 
@@ -180,8 +180,8 @@ def test_compose_against_sympy_substitution():
             continue
         net, w = surf["control_points"], surf.get("weights")
         l, m = len(net) - 1, len(net[0]) - 1
-        B = lambda n, i, x: sp.binomial(n, i) * x**i * (1 - x) ** (n - i)  # noqa: E731
-        wt = lambda i, j: Q(w[i][j]) if w else 1  # noqa: E731
+        B = lambda n, i, x: sp.binomial(n, i) * x**i * (1 - x) ** (n - i)
+        wt = lambda i, j: Q(w[i][j]) if w else 1
         s = sp.Rational(3, 11)
         uu, vv = _bernstein(curve["control_points"], curve.get("weights"), s)
         at = {u: uu, v: vv}
@@ -228,7 +228,7 @@ def _mp_root(alg):
     if lo == hi:
         return mpmath.mpf(lo.p) / lo.q
     poly = alg["poly"]
-    f = lambda z: mpmath.polyval(poly[::-1], z)  # noqa: E731
+    f = lambda z: mpmath.polyval(poly[::-1], z)
     with mpmath.workdps(80):
         a, b = mpmath.mpf(lo.p) / lo.q, mpmath.mpf(hi.p) / hi.q
         fa = f(a)
@@ -343,7 +343,7 @@ def test_every_exact_value_has_a_correctly_rounded_companion():
                     continue
                 lo, hi = (Fraction(v) for v in item["interval"])
                 poly = item["poly"]
-                value = lambda x: sum(c * x**k for k, c in enumerate(poly))  # noqa: E731
+                value = lambda x: sum(c * x**k for k, c in enumerate(poly))
                 if lo == hi:
                     assert value(lo) == 0 and item["f64"] == float.hex(_mpfr_round(lo))
                 else:

@@ -125,7 +125,7 @@ def test_bad_input_is_refused_with_the_argument_named(argv, needle, capsys):
 
 def test_output_that_is_a_directory_or_device_is_refused_before_work(tmp_path, monkeypatch):
     calls = []
-    import exactcagd.refdata.stream as stream
+    from exactcagd.refdata import stream
 
     monkeypatch.setattr(stream, "make_record", lambda *a: calls.append(a))
     with pytest.raises(OutputError):

@@ -21,4 +21,4 @@ published JSON Schemas in ``exactcagd/refdata/schemas/``.
 from .kinds import KINDS, make_record
 from .records import FORMAT_VERSION
 
-__all__ = ["KINDS", "make_record", "FORMAT_VERSION"]
+__all__ = ["FORMAT_VERSION", "KINDS", "make_record"]

@@ -44,15 +44,15 @@ from ..exact.bernstein import elevate, from_power
 from ..geometry.bezier_curve import BezierCurve
 
 __all__ = [
-    "record_rng",
-    "rational",
-    "points",
-    "weights",
-    "end_params",
+    "SCALE_EXPONENTS",
     "bezier_curve",
     "clamped_knots",
+    "end_params",
+    "points",
     "polynomial_with_roots",
-    "SCALE_EXPONENTS",
+    "rational",
+    "record_rng",
+    "weights",
 ]
 
 #: Exponents of the scale factors of the ``extreme_coefficients`` family.

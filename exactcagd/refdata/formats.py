@@ -34,9 +34,16 @@ from pathlib import Path
 from ..errors import InputError
 from ..outputs import check_output_dir, staged_dir
 from .kinds import kind_named
+from .options import (
+    check_count,
+    check_jobs,
+    families_for,
+    parse_degrees,
+    progress_enabled,
+)
 from .stream import Progress, ordered_lines, plan_batches
 
-__all__ = ["bezier_curve_entry", "bezier_intersection_entry", "write_bezier_fixtures", "BEZIER_KINDS"]
+__all__ = ["BEZIER_KINDS", "bezier_curve_entry", "bezier_intersection_entry", "write_bezier_fixtures"]
 
 BEZIER_KINDS = ("intersect", "implicitize")
 
@@ -117,20 +124,18 @@ def write_bezier_fixtures(out, kind: str, count: int, seed: int = 0, degrees=Non
 
     Returns the number of records written (rational records are skipped).
     """
-    from .suite import _check_jobs, _families, _progress_enabled, check_count, parse_degrees
-
     spec = kind_named(kind)
     if spec.name not in BEZIER_KINDS:
         raise InputError(f"--format bezier: kind {kind!r} has no bezier fixture layout; choose one of {', '.join(BEZIER_KINDS)}")
     check_count(count)
-    jobs = _check_jobs(jobs)
+    jobs = check_jobs(jobs)
     if isinstance(degrees, (tuple, list)):
         degrees = ",".join(map(str, degrees))
     degrees = parse_degrees(degrees, spec.name)
-    families = _families(spec.name, family)
+    families = families_for(spec.name, family)
     target = check_output_dir(out)
     specs = [b for f in families for b in plan_batches(spec.name, f, count, seed, degrees, jobs)]
-    bar = Progress(count * len(families), f"{kind} (bezier)", _progress_enabled(progress))
+    bar = Progress(count * len(families), f"{kind} (bezier)", progress_enabled(progress))
     written = 0
     try:
         with staged_dir(target) as stage, open(Path(stage) / "curves.json", "w", encoding="ascii") as curves_f, open(Path(stage) / "curve_intersections.json", "w", encoding="ascii") as cases_f:

@@ -37,9 +37,9 @@ from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from ..geometry.bspline import BSplineCurve, BSplineSurface
 from . import families as fam
-from .records import algebraic, exact, nested_exact, with_f64
+from .records import algebraic, with_f64
 
-__all__ = ["KINDS", "Kind", "make_record", "kind_named", "preload", "MAX_DEGREE"]
+__all__ = ["KINDS", "MAX_DEGREE", "Kind", "kind_named", "make_record", "preload"]
 
 #: Largest degree accepted from ``--degree``.
 MAX_DEGREE = 40

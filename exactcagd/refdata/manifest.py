@@ -22,7 +22,7 @@ from pathlib import Path
 from .. import __version__
 from .records import FORMAT_VERSION
 
-__all__ = ["SCHEMA_DIR", "schema_path", "sha256_file", "dependency_versions", "git_commit", "build_manifest", "manifest_text"]
+__all__ = ["SCHEMA_DIR", "build_manifest", "dependency_versions", "git_commit", "manifest_text", "schema_path", "sha256_file"]
 
 SCHEMA_DIR = Path(__file__).with_name("schemas")
 _DEPENDENCIES = ("gmpy2", "python-flint", "sympy", "numpy", "mpmath")

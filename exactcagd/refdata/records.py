@@ -30,7 +30,7 @@ from gmpy2 import mpq
 from ..exact.algebraic import RealAlgebraic
 from ..exact.scalars import rational_str, to_float, to_rational
 
-__all__ = ["FORMAT_VERSION", "exact", "f64", "f64_float", "algebraic", "with_f64", "nested_exact", "nested_f64", "parse_exact"]
+__all__ = ["FORMAT_VERSION", "algebraic", "exact", "f64", "f64_float", "nested_exact", "nested_f64", "parse_exact", "with_f64"]
 
 #: Version of the record format (bumped on any incompatible change of a record kind).
 FORMAT_VERSION = "1.0"
@@ -54,7 +54,7 @@ def parse_exact(value) -> mpq:
     """Inverse of :func:`exact` (ints and ``"p/q"`` strings)."""
     if isinstance(value, bool) or not isinstance(value, (int, str)):
         raise TypeError(f"not an exact number: {value!r}")
-    return mpq(value) if isinstance(value, int) else mpq(value)
+    return mpq(value)
 
 
 def _round_rational(q: mpq) -> float:

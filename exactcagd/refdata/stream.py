@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from ..errors import InputError
 from .kinds import make_record, preload
 
-__all__ = ["BatchSpec", "batch_lines", "plan_batches", "RecordExecutor", "ordered_lines", "Progress", "record_line"]
+__all__ = ["BatchSpec", "Progress", "RecordExecutor", "batch_lines", "ordered_lines", "plan_batches", "record_line"]
 
 #: Largest batch (records per task).
 MAX_BATCH = 64
@@ -151,7 +151,7 @@ class RecordExecutor:
         self._pool = self._client = self._cluster = None
         self.workers = 1
 
-    def __enter__(self) -> "RecordExecutor":
+    def __enter__(self) -> RecordExecutor:
         if self.dask:
             self._client, self._cluster = _dask_client(self.jobs, self.scheduler)
             self.workers = max(1, len(self._client.scheduler_info().get("workers", {})) or self.jobs)
@@ -174,10 +174,10 @@ class RecordExecutor:
     def lines(self, specs, progress: Progress | None = None):
         """Yield the JSON lines of ``specs`` in order (at most a window of batches in flight)."""
         if self._client is not None:
-            submit = lambda spec: self._client.submit(batch_lines, spec, pure=False)  # noqa: E731
+            submit = lambda spec: self._client.submit(batch_lines, spec, pure=False)
             window = 4 * self.workers + 2  # hides the scheduler round trip
         elif self._pool is not None:
-            submit = lambda spec: self._pool.submit(batch_lines, spec)  # noqa: E731
+            submit = lambda spec: self._pool.submit(batch_lines, spec)
             window = 2 * self.workers + 2
         else:
             submit, window = _Done, 1

@@ -28,18 +28,23 @@ import os
 import shutil
 import sys
 import tempfile
-from pathlib import Path
 
 from ..errors import InputError
 from ..outputs import atomic_write_text, check_output_dir, check_output_file, staged_dir
 from .kinds import KINDS, kind_named
 from .manifest import build_manifest, manifest_text, schema_path
+from .options import (
+    MAX_COUNT,
+    check_count,
+    check_jobs,
+    families_for,
+    parse_degrees,
+    progress_enabled,
+)
 from .stream import Progress, RecordExecutor, ordered_lines, plan_batches
 
-__all__ = ["STANDARD_COUNTS", "MAX_COUNT", "parse_degrees", "check_count", "write_kind", "write_suite", "cmd_refdata"]
+__all__ = ["MAX_COUNT", "STANDARD_COUNTS", "check_count", "cmd_refdata", "parse_degrees", "write_kind", "write_suite"]
 
-MAX_COUNT = 10_000_000
-MAX_JOBS = 256
 
 #: Records per family in the standard suite: ``(random, each hard family)`` per kind,
 #: sized so the whole suite (~3,700 records) takes about a minute on 2 cores.
@@ -59,54 +64,6 @@ STANDARD_COUNTS = {
 }
 #: Families too slow for the standard counts get at most this many records.
 _SLOW_FAMILY_CAP = {("intersect", "weights_wide"): 8, ("curve_eval", "high_degree"): 20, ("surface_eval", "high_degree"): 10}
-
-
-def parse_degrees(text, kind: str) -> tuple:
-    """``"3"`` or ``"2,1,2"`` (``None``: the kind's default) -> the kind's degrees, checked.
-
-    A kind takes up to ``len(default_degrees)`` degrees (compose: ``N,l,m``; surface and
-    B-spline evaluation: ``l,m``; intersect: ``n1,n2``), each in ``1 .. max_degree``.
-    """
-    spec = kind_named(kind)
-    if text is None:
-        return spec.default_degrees
-    try:
-        degrees = tuple(int(x) for x in str(text).split(","))
-    except ValueError:
-        raise InputError(f"--degree: expected integers like 3 or 2,1,2, got {text!r}") from None
-    arity = len(spec.default_degrees)
-    if not 1 <= len(degrees) <= arity:
-        raise InputError(f"--degree: {kind} takes 1 to {arity} degree(s), got {text!r}")
-    if any(not 1 <= d <= spec.max_degree for d in degrees):
-        raise InputError(f"--degree: {kind} degrees must be in 1..{spec.max_degree}, got {text!r}")
-    return degrees
-
-
-def check_count(count, argument: str = "--count") -> int:
-    if isinstance(count, bool) or not isinstance(count, int) or not 1 <= count <= MAX_COUNT:
-        raise InputError(f"{argument}: the number of records must be an integer in 1..{MAX_COUNT}, got {count!r}")
-    return count
-
-
-def _check_jobs(jobs) -> int:
-    if isinstance(jobs, bool) or not isinstance(jobs, int) or not 1 <= jobs <= MAX_JOBS:
-        raise InputError(f"--jobs: expected an integer in 1..{MAX_JOBS}, got {jobs!r}")
-    return jobs
-
-
-def _families(kind: str, family) -> list:
-    spec = kind_named(kind)
-    if family in (None, "random"):
-        return ["random"]
-    if family == "all":
-        return list(spec.families)
-    if family not in spec.families:
-        raise InputError(f"--family: kind {kind!r} has no family {family!r}; choose one of {', '.join(spec.families)} or all")
-    return [family]
-
-
-def _progress_enabled(progress) -> bool:
-    return bool(progress) if progress is not None else sys.stderr.isatty()
 
 
 def _stream_to(handle, lines) -> tuple[int, str]:
@@ -129,14 +86,14 @@ def write_kind(out, kind: str, count: int, seed: int = 0, degrees=None, family=N
     """
     spec = kind_named(kind)
     check_count(count)
-    jobs = _check_jobs(jobs)
+    jobs = check_jobs(jobs)
     if isinstance(degrees, (tuple, list)):
         degrees = ",".join(map(str, degrees))
     degrees = parse_degrees(degrees, kind)
-    families = _families(kind, family)
+    families = families_for(kind, family)
     target = check_output_file(out)
     specs = [b for f in families for b in plan_batches(spec.name, f, count, seed, degrees, jobs)]
-    bar = Progress(count * len(families), kind, _progress_enabled(progress))
+    bar = Progress(count * len(families), kind, progress_enabled(progress))
     lines = ordered_lines(specs, jobs=jobs, dask=dask, scheduler=scheduler, progress=bar)
     try:
         if target == "-":
@@ -184,7 +141,7 @@ def write_suite(out, seed: int = 0, count=None, kinds=None, jobs: int = 1, dask:
     target = check_output_dir(out)
     if count is not None:
         check_count(count)
-    jobs = _check_jobs(jobs)
+    jobs = check_jobs(jobs)
     plan = suite_plan(count, kinds)
     files = {}
     with staged_dir(target) as stage, RecordExecutor(jobs, dask, scheduler, kinds=plan) as executor:
@@ -193,7 +150,7 @@ def write_suite(out, seed: int = 0, count=None, kinds=None, jobs: int = 1, dask:
             shutil.copyfile(schema_path(kind), stage / "schemas" / f"{kind}.schema.json")
             degrees = KINDS[kind].default_degrees
             specs = [b for family, n in per_family.items() for b in plan_batches(kind, family, n, seed, degrees, jobs)]
-            bar = Progress(sum(per_family.values()), f"{kind:<18}", _progress_enabled(progress))
+            bar = Progress(sum(per_family.values()), f"{kind:<18}", progress_enabled(progress))
             try:
                 with open(stage / f"{kind}.jsonl", "wb") as handle:
                     n, digest = _stream_to(handle, executor.lines(specs, progress=bar))
