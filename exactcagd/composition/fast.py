@@ -32,13 +32,14 @@ formula as a homogeneous de Casteljau scheme with :func:`exactcagd.exact.bernste
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import flint
 import numpy as np
 from gmpy2 import mpq
 
 from ..errors import InputError
 from ..exact import bernstein as bz
-from ..exact.scalars import from_fmpq
 from ..exact.scalars import to_fmpq as _fmpq
 
 __all__ = ["compose_homogeneous_fast", "scaled", "unscaled"]
@@ -55,11 +56,15 @@ def scaled(c) -> flint.fmpq_poly:
 def unscaled(p: flint.fmpq_poly, n: int) -> list:
     """Bernstein coefficients (``mpq``) of degree ``n`` from the scaled form ``p``."""
     coeffs = p.coeffs()
-    out = []
-    for i in range(n + 1):
-        q = coeffs[i] if i < len(coeffs) else None
-        out.append(mpq(0) if q is None else from_fmpq(q) / bz.binomial(n, i))
-    return out
+    binomials = _binomials(n)
+    zero = mpq(0)
+    # mpq(p, q C(n, i)) is canonicalized by gmpy2: one conversion, no separate division
+    return [mpq(int(coeffs[i].p), int(coeffs[i].q) * binomials[i]) if i < len(coeffs) else zero for i in range(n + 1)]
+
+
+@lru_cache(maxsize=256)
+def _binomials(n: int) -> tuple:
+    return tuple(bz.binomial(n, i) for i in range(n + 1))
 
 
 def _basis(one: flint.fmpq_poly, zero: flint.fmpq_poly, degree: int) -> list:
@@ -80,14 +85,19 @@ def _flint_route(net: np.ndarray, curve: np.ndarray) -> np.ndarray:
     out_degree = n * (l + m)
     dims = net.shape[2]
     result = np.empty((out_degree + 1, dims), dtype=object)
-    for k in range(dims):
+    computed = dims
+    if all(x == 1 for x in net[:, :, -1].flat) and all(x == 1 for x in curve[:, 2]):
+        # polynomial surface and curve: the weight sum_ij B_i(X, W - X) B_j(Y, W - Y) = W^(l+m) = 1
+        computed = dims - 1
+        result[:, -1] = mpq(1)
+    for k in range(computed):
         total = flint.fmpq_poly([])
         for j in range(m + 1):
             g = flint.fmpq_poly([])
             for i in range(l + 1):
                 h = net[i, j, k]
                 if h != 0:
-                    g += b[i] * _fmpq(h)
+                    g += b[i] * (flint.fmpq(int(h.numerator), int(h.denominator)) if type(h) is _MPQ else _fmpq(h))
             if not g.is_zero():
                 total += g * c[j]
         result[:, k] = unscaled(total, out_degree)
