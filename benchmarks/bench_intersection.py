@@ -107,7 +107,16 @@ def main(quick: bool | None = None) -> None:
     headers = ["degree", "resultant degree", "intersections", "routes agree"] + [f"{r} (s)" for r in ROUTES]
     headers += ["bezier (s, count)"] if bezier else []
     fx = fixture_ratios()
+    exact_at = {row[0]: float(row[4]) for row in rows}
+    worst = max(fx, key=lambda r: float(r[-1]))
+    goals = [
+        f"exact route, degree 10: {exact_at.get(10, float('nan')):.2f} s (goal < 1 s)",
+        f"exact route, degree 20: {exact_at.get(20, float('nan')):.2f} s (goal < 10 s)",
+        f"interval / subdivision on the fixtures: at most {worst[-1]} ({worst[0]}; goal <= 3)",
+    ]
     body = "\n\n".join([
+        "## Goals (issue 15)",
+        "\n".join(f"- {g}" for g in goals),
         "## Scaling (random integer pairs, one process, 2 cores shared with other work)",
         markdown_table(headers, rows),
         f"Plot: `{plot.name}`.  Float routes run with the default work bound and exact fallback; "
