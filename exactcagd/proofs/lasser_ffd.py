@@ -44,7 +44,7 @@ def lattice():
     )
 
 
-@claim(doc="lasser", section="VII", ref="figure 9 degrees", statement="linear isoparametric boundary curves map to quintic Bézier curves")
+@claim(doc="lasser", section="VII", ref="figure 9 degrees", slow=True, statement="linear isoparametric boundary curves map to quintic Bézier curves")
 def iso_lines_quintic():
     rng = random.Random(9)
     lattices = [figure9()["surface"]] + [_random_lattice(rng) for _ in range(3)]
@@ -59,7 +59,7 @@ def iso_lines_quintic():
                           compared="printed degree 5 vs the quintic short form, which equals sympy's F(K(t)) at 4 exact parameters (figure-9 lattice)", reference="sympy")
 
 
-@claim(doc="lasser", section="VII", ref="figure 9 degrees", statement="linear non-isoparametric boundary curves map to Bézier curves of degree 20")
+@claim(doc="lasser", section="VII", ref="figure 9 degrees", slow=True, statement="linear non-isoparametric boundary curves map to Bézier curves of degree 20")
 def general_lines_degree():
     rng = random.Random(10)
     fig = figure9()

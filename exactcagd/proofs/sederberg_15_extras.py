@@ -414,11 +414,12 @@ def refinement_equations():
             expected_c = (k - kv[0]) / (kv[3] - kv[0]) if i < 3 else mpq(1)
             expected_d = (kv[4] - k) / (kv[4] - kv[1]) if i > 0 else mpq(1)
             assert (c, d) == (expected_c, expected_d)
-            for j in range(12):
+            for j in (1, 4, 7, 10):
                 x = kv[0] + (kv[4] - kv[0]) * mpq(j, 11)
                 assert _sympy_N(kv, x) == _sympy_N([0] * 0 + list(left), x) * c + d * _sympy_N(list(right), x)
         assert bx.refine_basis_function(kv, kv[0] - 1) == [(1, tuple(kv))]
-    return verified_range("random cubic knot vectors, all four positions", "the printed c_i, d_i and the identity, exactly at 12 points")
+    return verified_range("random cubic knot vectors, all four positions", "the printed c_i, d_i and the identity, exactly at 4 points per case",
+                          compared="printed (15.14)-(15.16) c_i, d_i vs the refinement identity evaluated with sympy's bspline_basis", reference="sympy")
 
 
 def _tmesh(seed=1574, weights=False):

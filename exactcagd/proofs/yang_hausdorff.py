@@ -165,3 +165,29 @@ def table1():
         "145 x 55 B-spline reliefs, closed cubic NURBS curves with 8 and 12 control points) and reports the same columns "
         "with certified distances; the qualitative claim (parabola < hyperbola < polyline segments) is checked there"
     )
+
+
+#: the approximants each paragraph of section 5 constructs (transcribed): the paragraph around Box I
+#: subdivides "the target rational Bézier curves whose Hausdorff distance to their approximate ..." and
+#: then names the approximate curve "a parabola C_2(t)"
+SECTION5_APPROXIMANT = "parabola"
+
+
+@claim(doc="yang", section="5", ref="Box I paragraph: approximate hyperbolas",
+       statement="we subdivide the target rational Bézier curves whose Hausdorff distance to their approximate hyperbolas are larger than the 2D tolerance d")
+def approximant_named_in_box_paragraph():
+    from exactcagd.curves_on_surfaces.approximants import parabola
+
+    # the curve of section 5 is the s/t-parabola: u quadratic in t, v Möbius (degree (2, 1) maps), not the hyperbola of [15]
+    a = parabola((mpq(1, 5), mpq(1, 10)), (mpq(1, 2), mpq(1)), (mpq(4, 5), mpq(9, 10)), (mpq(1, 4), mpq(1)))
+    assert len(a.u_map[0]) == 3 and len(a.v_map[1]) == 2
+
+    def is_section5_approximant(name):
+        return None if name == SECTION5_APPROXIMANT else f"section 5 approximates by {SECTION5_APPROXIMANT}s (C_2(t) 'a parabola'); hyperbolas are the method of [15] it compares against"
+
+    return LG.erratum(
+        "whose Hausdorff distance to their approximate hyperbolas are larger than d",
+        "... to their approximate parabolas ... (the same paragraph: 'the approximate curve (a parabola C_2(t))')",
+        "a slip of the method name: the tolerance test of section 5 is on the parabolas it constructs",
+        printed_form="hyperbola", corrected_form="parabola", check=LG.predicate(is_section5_approximant), reference="text",
+    )
