@@ -68,3 +68,24 @@ def moving_line_de_casteljau():
     assert Lt.subs(t, 0) == lines[0] and Lt.subs(t, 1) == lines[-1]
     return verified("a random cubic moving line, symbolic tau (sympy): L_0^<n> = L[tau], the left edge of the triangle is the moving line on [0, tau], end lines L_0, L_n",
                     compared="printed (18.38)-(18.40) vs sympy expansion", reference="sympy")
+
+
+@claim(doc=DOC, section="1.3", ref="(1.5)-(1.9)", statement="C = B + [(P - B).n] n; u = P - C; v = n x u; r = u cos(theta) + v sin(theta); P' = C + r rotates P by theta about the axis through B along n")
+def rotation_about_axis():
+    th = sp.Symbol("theta")
+    n = sp.Matrix([2, 1, 2]) / 3
+    B = sp.Matrix([1, 1, 1])
+    rng = random.Random(13)
+    for _ in range(3):
+        P = sp.Matrix([rng.randint(-5, 5) for _ in range(3)])
+        C = B + ((P - B).dot(n)) * n
+        u = P - C
+        v = n.cross(u)
+        Pr = C + u * sp.cos(th) + v * sp.sin(th)
+        # Rodrigues' rotation matrix about the unit axis n (independent formula)
+        K = sp.Matrix([[0, -n[2], n[1]], [n[2], 0, -n[0]], [-n[1], n[0], 0]])
+        R = sp.eye(3) + sp.sin(th) * K + (1 - sp.cos(th)) * K * K
+        assert (Pr - (B + R * (P - B))).applyfunc(sp.simplify) == sp.zeros(3, 1)
+        assert sp.simplify(u.dot(v)) == 0 and sp.simplify(u.dot(u) - v.dot(v)) == 0  # the premises of (1.5)
+    return verified("three random points, axis (2,1,2)/3 through (1,1,1), symbolic theta: (1.6)-(1.9) equal Rodrigues' rotation (sympy)",
+                    compared="printed (1.5)-(1.9) vs Rodrigues' rotation matrix", reference="sympy")
