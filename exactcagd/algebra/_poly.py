@@ -140,8 +140,12 @@ def curve_power(curve) -> tuple[flint.fmpz_poly, flint.fmpz_poly, flint.fmpz_pol
     if curve.dimension != 2:
         raise DimensionError(f"implicit algebra needs a planar curve, got dimension {curve.dimension}")
     limits.check("max_implicit_degree", curve.degree, f"implicit algebra of a degree-{curve.degree} curve (implicit degree up to {curve.degree})")
-    power = bz.to_power(curve.homogeneous())
-    comps = [fmpq_poly_of(power[:, j]) for j in range(3)]
+    hom = curve.homogeneous()
+    n = hom.shape[0] - 1
+    # Bernstein -> power basis in flint directly (one Taylor shift per column, notes 3.3),
+    # without the mpq round trip of bernstein.to_power (66 -> 38 us for a cubic)
+    comps = [bz.scaled_to_power(flint.fmpq_poly([to_fmpq(c) * bz.binomial(n, i) for i, c in enumerate(hom[:, j])]), n)
+             for j in range(3)]
     return tuple(primitive_fmpz_polys(comps))
 
 
