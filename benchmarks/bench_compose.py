@@ -16,6 +16,7 @@ Writes benchmarks/results/compose.md.
 
 from __future__ import annotations
 
+import math
 import random
 import sys
 from fractions import Fraction as Fr
@@ -23,6 +24,7 @@ from math import comb
 from pathlib import Path
 
 import sympy
+from gmpy2 import mpq
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
@@ -78,6 +80,56 @@ def verdict_line(ratios) -> str:
     )
 
 
+def bare_flint(surface, curve):
+    """The route (b) formula written directly in python-flint (the floor of issue 18):
+    inputs converted to ``fmpq`` once (not timed), output the Bernstein coefficients as ``fmpq``.
+
+    ``F(K) = sum_ij h_ij B^l_i(u) B^m_j(v)`` with ``B^l_i(u) W^l = C(l,i) X^i (W - X)^(l-i)`` in
+    scaled Bernstein form (polynomial products), divided by ``C(R, r)`` at the end (Lasser &
+    Bonneau eq. (7); the code's ``exactcagd.composition.fast``).
+    """
+    import flint
+
+    def q(x):
+        x = mpq(x)
+        return flint.fmpq(int(x.numerator), int(x.denominator))
+
+    net = surface.homogeneous()
+    hom = curve.homogeneous()
+    l, m, dims = net.shape[0] - 1, net.shape[1] - 1, net.shape[2]
+    n = hom.shape[0] - 1
+    if not (surface.is_rational or curve.is_rational):
+        dims -= 1  # polynomial: the weight column is 1, not computed
+    net_q = [[[q(net[i, j, k]) for k in range(dims)] for j in range(m + 1)] for i in range(l + 1)]
+    cols = [[q(hom[i, k]) * math.comb(n, i) for i in range(n + 1)] for k in range(3)]
+
+    def run():
+        x, y, w = (flint.fmpq_poly(c) for c in cols)
+
+        def basis(one, zero, k):
+            p1, p0 = [flint.fmpq_poly([1])], [flint.fmpq_poly([1])]
+            for _ in range(k):
+                p1.append(p1[-1] * one)
+                p0.append(p0[-1] * zero)
+            return [p1[i] * p0[k - i] * math.comb(k, i) for i in range(k + 1)]
+
+        b, c = basis(x, w - x, l), basis(y, w - y, m)
+        R = n * (l + m)
+        out = []
+        for k in range(dims):
+            total = flint.fmpq_poly([])
+            for j in range(m + 1):
+                g = flint.fmpq_poly([])
+                for i in range(l + 1):
+                    g += b[i] * net_q[i][j][k]
+                total += g * c[j]
+            coeffs = total.coeffs() + [flint.fmpq(0)] * (R + 1 - len(total.coeffs()))
+            out.append([coeffs[r] / math.comb(R, r) for r in range(R + 1)])
+        return out
+
+    return run
+
+
 def main():
     quick = parse_quick(__doc__.splitlines()[0])
     cases = [
@@ -99,10 +151,14 @@ def main():
     sympy_rational_limit = 18 if quick else 30
     rows = []
     ratios = []
+    floor_rows = []
     for name, l, m, N, rational in cases:
         surface, curve = instance(l, m, N, rational)
         degree = N * (l + m)
-        fast = measure(lambda: compose(surface, curve, shortcut=False), repeat=7, budget=5)
+        fast = measure(lambda: compose(surface, curve, shortcut=False), repeat=7, budget=5, memory=True)
+        bare = measure(bare_flint(surface, curve), repeat=7, budget=5, memory=True)
+        floor_rows.append([name, degree, fast.fmt(), bare.fmt(), f"{fast.low / bare.low:.2f}x",
+                           "yes" if fast.low <= 1.3 * bare.low else "no", fast.fmt_memory(), bare.fmt_memory()])
         bern = measure(lambda: compose(surface, curve, shortcut=False, strategy="bernstein"), repeat=3, budget=10)
         if lasser_work(l, m, N) <= lasser_limit:
             lasser = measure(lambda: compose(surface, curve, method="lasser", shortcut=False), repeat=2, budget=20)
@@ -127,6 +183,13 @@ def main():
     body = (
         f"Mode: {'quick' if quick else 'full'}. Median (min-max) of repeated runs; random exact inputs "
         "(coordinates k/1000, weights p/q with 1 <= p, q <= 9); `shortcut=False` (general formula).\n\n"
+        + "## Goal (issue 18): compose() within 1.3x of a bare python-flint implementation of the same formula\n\n"
+        "`compose(S, K, shortcut=False)` (the public call: input checks, conversions, output as an exact curve) vs "
+        "`bare_flint` in this module (the same scaled-Bernstein formula on pre-converted `fmpq` inputs, output "
+        "`fmpq` lists). Ratio of minimum times, same run.\n\n"
+        + markdown_table(["case", "degree", "compose (route (b) flint)", "bare python-flint", "ratio", "goal <= 1.3x met",
+                          "peak memory compose", "peak memory bare"], floor_rows)
+        + "\n\n## Routes and sympy\n\n"
         + table
         + "\n\nRatios are slower-tool time / route (b) flint time measured in the same run. "
         f"Sympy's output is in the power basis (its conversion to Bézier form is not timed). sympy/fast: {summary}.\n"

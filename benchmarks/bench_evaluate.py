@@ -3,8 +3,8 @@
 For polynomial plane curves of degree 3, 10, 20, 40 (random rational control points in
 [-1, 1] with denominators up to 2^20, fixed seed) and random float parameters in [0, 1]:
 
-* points/second of ``exactcagd.numeric.evaluate`` with the three float methods
-  ("decasteljau", "horner", "power"), certified radii included (and values only);
+* points/second of ``exactcagd.numeric.evaluate`` with the float methods
+  ("auto" -- the default --, "decasteljau", "horner", "power"), certified radii included (and values only);
 * points/second of exact ``mpq`` de Casteljau (``BezierCurve.evaluate``) and of mpmath
   de Casteljau at 30 and 60 digits;
 * the largest actual error against the exact value (computed in ``mpq``) and the mean
@@ -115,6 +115,7 @@ def main() -> None:
             rows.append([n, f"mpmath {digits} digits", f"{n_exact / timing.median:,.0f}", "", f"{err:.2e}", "", ""])
             plot.append((f"mpmath {digits}", n, timing.median / n_exact, err, None))
         print(f"degree {n} done")
+    interval_rows = bench_interval_horner(repeat, budget)
     headers = ["degree", "method", "points/s (with radius)", "points/s (values only)", "max |error|",
                "mean radius", "max radius"]
     body = (
@@ -126,10 +127,56 @@ def main() -> None:
         "Horner): its certified radius grows with the degree much faster than de Casteljau's or "
         "Bernstein-Horner's. Work-precision plot: `evaluate_work_precision.png` (filled: actual error, "
         "open: certified radius; errors that are exactly 0 -- exact mpq, and mpmath at 60 digits for degree 3 -- are drawn at the bottom edge 1e-80).\n"
+        + "\n## Interval arithmetic: degree-10 interval Horner (issue 18 goal: <= 2x python-flint arb)\n\n"
+        "One Horner evaluation of a degree-10 polynomial with interval coefficients (width 1e-12) at an interval "
+        "argument (width 1e-8), written as the same Python loop `h = h * x + c` for each tool except `arb_poly` "
+        "(one call into Arb). `FloatInterval` (binary64 endpoints, directed roundings) and `Interval` (exact mpq "
+        "endpoints) are exactcagd's; `arb` is python-flint's ball at 53 bits (midpoint-radius, so its enclosure is "
+        "not the same set); `mpmath.iv` is mpmath's interval type. Ratio: time / python-flint `arb` loop time, same run.\n\n"
+        + markdown_table(["tool", "time per evaluation: median (min-max)", "ratio to arb loop (min times)", "result width",
+                          "peak traced memory"], interval_rows)
+        + "\n"
     )
     path = write_result("evaluate", "Certified float evaluation vs exact and multiprecision", body)
     _plot(plot)
     print(f"wrote {path}")
+
+
+def bench_interval_horner(repeat: int, budget: float) -> list:
+    """Rows: degree-10 interval Horner with FloatInterval, Interval, flint arb (loop and arb_poly), mpmath.iv."""
+    import flint
+    import mpmath
+
+    from exactcagd.numeric.interval import FloatInterval, Interval
+
+    lows = [1.0 / (k + 3) for k in range(11)]
+    x_lo, x_hi = 0.3, 0.30000001
+
+    def horner(coeffs, x):
+        h = coeffs[-1]
+        for c in reversed(coeffs[:-1]):
+            h = h * x + c
+        return h
+
+    fi = [FloatInterval(a, a + 1e-12) for a in lows]
+    ei = [Interval(a, a + 1e-12) for a in lows]
+    ab = [flint.arb(a + 0.5e-12, 0.5e-12) for a in lows]
+    iv = [mpmath.iv.mpf([a, a + 1e-12]) for a in lows]
+    fx, ex, ax, ix = FloatInterval(x_lo, x_hi), Interval(x_lo, x_hi), flint.arb((x_lo + x_hi) / 2, (x_hi - x_lo) / 2), mpmath.iv.mpf([x_lo, x_hi])
+    poly = flint.arb_poly(ab)
+    tools = [
+        ("python-flint arb (Python loop)", lambda: horner(ab, ax), lambda r: float(2 * r.rad())),
+        ("python-flint arb_poly (one call)", lambda: poly(ax), lambda r: float(2 * r.rad())),
+        ("exactcagd FloatInterval", lambda: horner(fi, fx), lambda r: r.hi - r.lo),
+        ("exactcagd Interval (exact mpq)", lambda: horner(ei, ex), lambda r: float(r.hi - r.lo)),
+        ("mpmath.iv", lambda: horner(iv, ix), lambda r: float(r.delta)),
+    ]
+    rows, base = [], None
+    for name, func, width in tools:
+        timing = measure(func, repeat=max(repeat, 20), budget=budget, memory=True)
+        base = timing.low if base is None else base
+        rows.append([name, timing.fmt(), f"{timing.low / base:.1f}x", f"{width(func()):.2e}", timing.fmt_memory()])
+    return rows
 
 
 def _plot(points) -> None:
@@ -139,7 +186,7 @@ def _plot(points) -> None:
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    markers = {"decasteljau": "o", "horner": "s", "power": "^", "exact mpq": "*", "mpmath 30": "D", "mpmath 60": "P"}
+    markers = {"auto": "x", "decasteljau": "o", "horner": "s", "power": "^", "exact mpq": "*", "mpmath 30": "D", "mpmath 60": "P"}
     colors = {3: "tab:blue", 10: "tab:orange", 20: "tab:green", 40: "tab:red"}
     floor = 1e-80
     for method, n, sec, err, radius in points:
