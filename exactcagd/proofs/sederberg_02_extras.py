@@ -166,7 +166,7 @@ def cubic_continuity_conditions():
     return verified("symbolic end derivatives of cubics over [t0,t1], [t1,t2]; exact C^k test on an instance")
 
 
-@claim(doc="sederberg", section="2.10", ref="(2.15)", statement="C^n curves are also G^n as long as P'(t1) = Q'(t1) != 0, ...")
+@claim(doc="sederberg", section="2.10", ref="(2.15)", covers=["(2.14)"], statement="C^n curves are also G^n as long as P'(t1) = Q'(t1) != 0, ...")
 def c_implies_g_needs_regularity():
     # C1 joint with vanishing derivative and a turn-back: C^1 but not G^1
     p = BezierCurve([[0, 0], [1, 0], [2, 0], [2, 0]])   # P'(1) = 0
@@ -305,7 +305,7 @@ def explicit_curves():
     return verified("x(t) = t0 + (t1 - t0) t for n = 1, 2, 3, 5 symbolically; the explicit rational quadratic (0,1,0; 1,2,1) has true degree 3")
 
 
-@claim(doc="sederberg", section="2.15", ref="(2.18)-(2.20)", statement="q_0 = 0, q_i = sum_{j<i} p_j/(n+1); the area under an explicit curve is the average of its control values")
+@claim(doc="sederberg", section="2.15", ref="(2.18)-(2.20)", covers=["(2.16)", "(2.17)"], statement="q_0 = 0, q_i = sum_{j<i} p_j/(n+1); the area under an explicit curve is the average of its control values")
 def bernstein_integrals():
     for n in range(0, 6):
         p = sp.symbols(f"p0:{n + 1}")

@@ -207,7 +207,7 @@ def interpolation_constraints():
     return verified("exact constrained fit interpolates its three points; the printed block system equals the Lagrangian stationarity (multiplier scaled by 1/2)")
 
 
-@claim(doc="sederberg", section="11.4.2", ref="(11.11)", statement="X = [x1..xM]; H = [int B_i B_j]; A (2M x n), a_ij = a_(i+M)j = B_j(u_i); b_i = lx_i, b_(i+M) = -sx_i")
+@claim(doc="sederberg", section="11.4.2", ref="(11.11)", covers=["(11.9)", "(11.10)"], statement="X = [x1..xM]; H = [int B_i B_j]; A (2M x n), a_ij = a_(i+M)j = B_j(u_i); b_i = lx_i, b_(i+M) = -sx_i")
 def box_qp_formulation():
     ts, knots = _setup(5)
     curve, cert = ft.box_constrained_fairing(PTS, ts, knots, 3, "axis", "1/2")

@@ -89,3 +89,52 @@ def rotation_about_axis():
         assert sp.simplify(u.dot(v)) == 0 and sp.simplify(u.dot(u) - v.dot(v)) == 0  # the premises of (1.5)
     return verified("three random points, axis (2,1,2)/3 through (1,1,1), symbolic theta: (1.6)-(1.9) equal Rodrigues' rotation (sympy)",
                     compared="printed (1.5)-(1.9) vs Rodrigues' rotation matrix", reference="sympy")
+
+
+def _directed(A, Bs):
+    """max over a in A of min over b in Bs of |a - b|^2 (exact, point samples)."""
+    return max(min((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2 for b in Bs) for a in A)
+
+
+@claim(doc=DOC, section="2.6", ref="(2.9)", statement="the Hausdorff distance d(P, Q) = max_s min_t |P(s) - Q(t)|")
+def hausdorff_definition():
+    from exactcagd.proofs import _ledger as L
+
+    # P: the segment (0,0)-(1,0); Q: the segment (0,0)-(3,0) (P is part of Q)
+    P = [(sp.Rational(k, 12), 0) for k in range(13)]
+    Q = [(sp.Rational(k, 12), 0) for k in range(37)]
+
+    def symmetric(formula):
+        d_pq, d_qp = formula(P, Q), formula(Q, P)
+        return None if d_pq == d_qp == 4 else f"d(P, Q)^2 = {d_pq}, d(Q, P)^2 = {d_qp}: not a distance between the curves (Q reaches 2 beyond P)"
+
+    return L.erratum(
+        "d(P, Q) = max_s { min_t |P(s) - Q(t)| }",
+        "d(P, Q) = max( max_s min_t |P(s) - Q(t)|, max_t min_s |P(s) - Q(t)| ) (the printed one is the one-sided distance)",
+        "P = segment (0,0)-(1,0) inside Q = segment (0,0)-(3,0): the printed formula gives d(P, Q) = 0 and d(Q, P) = 2, "
+        "so it is neither symmetric nor zero only for equal curves; the two-sided maximum gives 2 both ways (exact samples)",
+        printed_form=_directed, corrected_form=lambda A, Bs: max(_directed(A, Bs), _directed(Bs, A)),
+        check=L.predicate(symmetric), reference="exact",
+    )
+
+
+@claim(doc=DOC, section="10.6.1", ref="(10.5)", statement="|f(x) - p(x)| <= max f^(n+1)(x)/(n+1)! max |(x - x0)...(x - xn)|")
+def lagrange_error_bound_abs():
+    from exactcagd.proofs import _ledger as L
+
+    f = -(x**2)  # n = 1, nodes 0 and 1: p = -x, f - p = x - x^2
+    nodes = (0, 1)
+    p = -x
+    err = max(abs((f - p).subs(x, sp.Rational(k, 10))) for k in range(11))
+    node_max = max(abs((x - nodes[0]) * (x - nodes[1])).subs(x, sp.Rational(k, 10)) for k in range(11))
+
+    def bounds_error(deriv_bound):
+        bound = deriv_bound(sp.diff(f, x, 2)) / sp.factorial(2) * node_max
+        return None if err <= bound else f"f = -x^2 on [0, 1]: |f - p| reaches {err}, the bound is {bound}"
+
+    return L.erratum(
+        "max_{a<=x<=b} f^(n+1)(x)/(n+1)!",
+        "max_{a<=x<=b} |f^(n+1)(x)|/(n+1)!",
+        "with a negative (n+1)-th derivative the printed right-hand side is negative; the absolute value makes (10.1) a bound (as the 10.6 linear case)",
+        printed_form=lambda d: d, corrected_form=lambda d: abs(d), check=L.predicate(bounds_error), reference="exact",
+    )
