@@ -138,3 +138,28 @@ def lagrange_error_bound_abs():
         "with a negative (n+1)-th derivative the printed right-hand side is negative; the absolute value makes (10.1) a bound (as the 10.6 linear case)",
         printed_form=lambda d: d, corrected_form=lambda d: abs(d), check=L.predicate(bounds_error), reference="exact",
     )
+
+
+@claim(doc=DOC, section="1.5", ref="(1.36)-(1.39)", covers=["(1.1)"],
+       statement="P(t) = (1-t) P0 + t P1; the affine form through P(alpha), P(beta); x = (a0 + a1 t)/(d0 + d1 t), y = (b0 + b1 t)/(d0 + d1 t) is a line; (x - x0, y - y0).(a, b) = a x + b y - (a x0 + b y0); conics a X^2 + ... + f W^2 = 0; P1.P2 = |P1||P2| cos(theta)")
+def line_equations():
+    a0, a1, b0, b1, d0, d1, al, be, ga = sp.symbols("a0 a1 b0 b1 d0 d1 alpha beta gamma")
+    P0, P1 = sp.Matrix(sp.symbols("p0x p0y")), sp.Matrix(sp.symbols("p1x p1y"))
+    P = lambda s: (1 - s) * P0 + s * P1  # noqa: E731
+    affine = P(al) + (ga - al) / (be - al) * (P(be) - P(al))
+    assert (affine - P(ga)).applyfunc(sp.simplify) == sp.zeros(2, 1)
+    assert (affine - ((be - ga) * P(al) + (ga - al) * P(be)) / (be - al)).applyfunc(sp.simplify) == sp.zeros(2, 1)
+    # (1.37) is a line: its points are collinear (the 3 x 3 determinant of three homogeneous points vanishes)
+    H = lambda s: sp.Matrix([a0 + a1 * s, b0 + b1 * s, d0 + d1 * s])  # noqa: E731
+    assert sp.expand(sp.Matrix.hstack(H(0), H(1), H(t)).det()) == 0
+    x0, y0, a, b = sp.symbols("x0 y0 a b")
+    assert sp.expand(sp.Matrix([x - x0, y - y0]).dot(sp.Matrix([a, b])) - (a * x + b * y - (a * x0 + b * y0))) == 0
+    # (1.39): homogenizing a conic gives every term degree 2
+    W_, X_, Y_ = sp.symbols("W X Y")
+    conic = sp.Poly(sum(c * m for c, m in zip(sp.symbols("ca cb cc cd ce cf"), (X_**2, X_ * Y_, Y_**2, X_ * W_, Y_ * W_, W_**2))), X_, Y_, W_)
+    assert conic.is_homogeneous and conic.total_degree() == 2
+    # (1.1) on the angle example of 1.2: |P1||P2| cos(theta) = component sum
+    u_, v_ = sp.Matrix([1, 2, 4]), sp.Matrix([3, -4, 2])
+    assert u_.dot(v_) == 3 and sp.simplify(u_.norm() * v_.norm() * sp.cos(sp.acos(3 / (u_.norm() * v_.norm()))) - 3) == 0
+    return verified("symbolic (sympy): the affine two-point form, collinearity of (1.37), the normal form (1.38), homogeneity of (1.39), (1.1) on the 1.2 example",
+                    compared="printed (1.36)-(1.39), (1.1) vs sympy identities", reference="sympy")
