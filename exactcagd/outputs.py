@@ -204,7 +204,10 @@ def atomic_write_bytes(path, data: bytes) -> None:
     """
     path = _absolute(path)
     _check_replaceable(path)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    except OSError as exc:  # folder missing, not a folder, not writable
+        raise OutputError(f"cannot write {path}: {exc.strerror or exc}") from None
     try:
         with os.fdopen(fd, "wb") as handle:
             handle.write(data)
@@ -256,8 +259,11 @@ def staged_dir(final) -> Iterator[Path]:
         raise OutputError(f"refusing to write {final}: it is under /proc, /sys or /dev")
     if os.path.lexists(final) and (os.path.islink(final) or not final.is_dir()):
         raise OutputError(f"refusing to replace {final}: it exists and is not a directory")
-    final.parent.mkdir(parents=True, exist_ok=True)
-    stage = Path(tempfile.mkdtemp(dir=final.parent, prefix=f".{final.name}.staging-"))
+    try:
+        final.parent.mkdir(parents=True, exist_ok=True)
+        stage = Path(tempfile.mkdtemp(dir=final.parent, prefix=f".{final.name}.staging-"))
+    except OSError as exc:  # an ancestor is a file, or not writable
+        raise OutputError(f"cannot create the output folder {final}: {exc.strerror or exc}") from None
     try:
         os.chmod(stage, 0o777 & ~_UMASK)  # mkdtemp makes 0700 folders
         yield stage

@@ -128,6 +128,13 @@ def test_file_given_as_output_folder_is_refused(tmp_path):
 def test_missing_parent_of_output_file_is_refused(tmp_path):
     with pytest.raises(OutputError, match="missing or not writable"):
         check_output_file(tmp_path / "no" / "such" / "r.jsonl")
+    with pytest.raises(OutputError, match="cannot write"):
+        atomic_write_text(tmp_path / "no" / "r.jsonl", "x")
+    (tmp_path / "f").write_text("k")
+    with pytest.raises(OutputError, match="cannot create"):
+        with staged_dir(tmp_path / "f" / "scene"):
+            pass
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f"] and (tmp_path / "f").read_text() == "k"
 
 
 @pytest.mark.skipif(os.geteuid() == 0, reason="root can write into read-only folders")
