@@ -15,6 +15,7 @@
 from __future__ import annotations
 
 import json
+import logging
 import subprocess
 import sys
 import tempfile
@@ -55,7 +56,7 @@ def throughput(quick: bool) -> str:
     slow = {"intersect": 4, "inversion": 4, "implicitize": 2}
     base = 160 if quick else 800
     start = time.perf_counter()
-    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0")
+    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0", silence_logs=logging.ERROR)
     client = Client(cluster)
     startup = time.perf_counter() - start
     client.run(preload, list(KINDS))  # workers import the builders' modules once, outside the timings

@@ -8,7 +8,7 @@ published JSON Schemas in ``exactcagd/refdata/schemas/``.
 * :mod:`.families` -- random inputs and the hard families;
 * :mod:`.kinds` -- the record kinds and :func:`make_record`;
 * :mod:`.stream` -- batched, ordered, constant-memory generation (processes or Dask);
-* :mod:`.suite` -- single-kind files, the standard suite and the CLI;
+* :mod:`.suite` -- single-kind files, the standard suite and the CLI (:mod:`.options` checks its arguments);
 * :mod:`.manifest` -- versions, counts, schema and file hashes;
 * :mod:`.formats` -- the ``bezier`` package's functional-test fixture layout;
 * :mod:`.schemagen` -- builds the published JSON Schemas (``python -m exactcagd.refdata.schemagen``).
