@@ -39,7 +39,7 @@ import sympy
 
 from ..errors import InputError
 from ._diagnostics import BasePointError, BasePointWarning, ImproperParametrizationError, ImproperParametrizationWarning
-from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, mpoly_to_sympy, normalize_implicit
+from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, mpoly_to_sympy, normalize_implicit, zctx
 from .resultants import bezout_matrix_bernstein, det_bareiss, resultant_coeffs
 
 __all__ = [
@@ -104,13 +104,34 @@ def reduced_components(curve, warn: bool = True):
     return X, Y, W, g
 
 
+def _padded(p, n: int) -> list:
+    """The ``n + 1`` integer coefficients of an ``fmpz_poly`` of degree ``<= n``, lowest first."""
+    c = [int(v) for v in p.coeffs()]
+    return c + [0] * (n + 1 - len(c))
+
+
+_XYT = zctx(("x", "y", "_t_"), "lex")
+
+
+def _flint_resultant_xy(X, Y, W):
+    """``Res_t(W x - X, W y - Y)`` built directly in ``Z[x, y, t]`` (lex) for python-flint's
+    resultant, then read back into ``Z[x, y]``: the route of ``resultant_coeffs(..., "flint")``
+    without lifting coefficient lists from ``Z[x, y]`` term by term."""
+    n = max(p.degree() for p in (X, Y, W))
+    cx, cy, cw = (_padded(p, n) for p in (X, Y, W))
+    a = {(1, 0, k): cw[k] for k in range(n + 1) if cw[k]} | {(0, 0, k): -cx[k] for k in range(n + 1) if cx[k]}
+    b = {(0, 1, k): cw[k] for k in range(n + 1) if cw[k]} | {(0, 0, k): -cy[k] for k in range(n + 1) if cy[k]}
+    r = _XYT.from_dict(a).resultant(_XYT.from_dict(b), "_t_")
+    return XY.from_dict({(m[0], m[1]): v for m, v in r.to_dict().items()})
+
+
 def _xy_coeff_lists(X, Y, W) -> tuple[list, list]:
     """Coefficients (in t) of ``W x - X`` and ``W y - Y`` as integer polynomials in x, y."""
     x, y = XY.gens()
     n = max(p.degree() for p in (X, Y, W))
-    get = lambda p, k: int(p.coeffs()[k]) if k <= p.degree() else 0  # noqa: E731
-    a = [get(W, k) * x - get(X, k) for k in range(n + 1)]
-    b = [get(W, k) * y - get(Y, k) for k in range(n + 1)]
+    cx, cy, cw = (_padded(p, n) for p in (X, Y, W))
+    a = [cw[k] * x - cx[k] for k in range(n + 1)]
+    b = [cw[k] * y - cy[k] for k in range(n + 1)]
     while len(a) > 1 and a[-1] == 0:
         a.pop()
     while len(b) > 1 and b[-1] == 0:
@@ -129,7 +150,7 @@ def implicit_resultant(X, Y, W, via: str = "flint"):
         # flint needs both lists non-constant in t; a constant list means a line x = c
         if len(a) == 1 or len(b) == 1:
             return resultant_coeffs(a, b, "sylvester")
-        return resultant_coeffs(a, b, "flint")
+        return _flint_resultant_xy(X, Y, W)
     return resultant_coeffs(a, b, via)
 
 
