@@ -178,3 +178,42 @@ def bernstein_derivative_bounds():
                 assert c * min(d) <= v <= c * max(d)
     return verified("n = 2, 3, 5, every r (sympy differentiation of the Bernstein form; bounds at 11 exact points)",
                     compared="printed (12.68) vs sympy's r-th derivative; (12.69) at exact sample points", reference="sympy")
+
+
+@claim(doc=DOC, section="12.4", ref="(12.70)-(12.75)",
+       statement="vector Lagrange interpolant P_n = sum P_k L_k; componentwise remainders with xi_1 != xi_2; P(t) in P_n(t) + [P^(n+1)]/(n+1)! prod (t - t_k) with the box (12.73); cubic Hermite arcs P(0) H0 + P'(0) H1 + P'(1) H2 + P(1) H3")
+def vector_interpolation():
+    nodes = (sp.Integer(0), sp.Rational(1, 2), sp.Integer(1))
+    n = len(nodes) - 1
+    Px, Py = t**4 - 2 * t**3 + t, t**5 + 3 * t**3  # P''' linear in x, quadratic (monotone on [0, 1]) in y
+    Ls = _lagrange_basis(nodes)
+    Xn = sum(Px.subs(t, nd) * Lk for nd, Lk in zip(nodes, Ls))
+    Yn = sum(Py.subs(t, nd) * Lk for nd, Lk in zip(nodes, Ls))
+    w = sp.prod([t - nd for nd in nodes])
+    dx, dy = sp.diff(Px, t, n + 1), sp.diff(Py, t, n + 1)  # linear: extremes at t = 0, 1
+    bx = sorted([dx.subs(t, 0), dx.subs(t, 1)])
+    by = sorted([dy.subs(t, 0), dy.subs(t, 1)])
+    count = 0
+    for k in range(1, 20):
+        s = sp.Rational(k, 20)
+        for comp, interp, (lo, hi) in ((Px, Xn, bx), (Py, Yn, by)):
+            ends = sorted([(interp + lo / sp.factorial(n + 1) * w).subs(t, s), (interp + hi / sp.factorial(n + 1) * w).subs(t, s)])
+            assert ends[0] <= comp.subs(t, s) <= ends[1]
+            count += 1
+        # (12.72): the x and y remainders need different xi in general (here at s = 1/4)
+    xi = sp.Symbol("xi")
+    s = sp.Rational(1, 4)
+    sx = sp.solve(sp.Eq((Px - Xn).subs(t, s), dx.subs(t, xi) / 6 * w.subs(t, s)), xi)
+    sy = sp.solve(sp.Eq((Py - Yn).subs(t, s), dy.subs(t, xi) / 6 * w.subs(t, s)), xi)
+    sx = [r for r in sx if r.is_real and 0 < r < 1]
+    sy = [r for r in sy if r.is_real and 0 < r < 1]
+    assert sx and sy and set(sx).isdisjoint(sy)
+    # (12.75): a cubic curve is reproduced by its cubic Hermite form with the basis (12.53)
+    H = [2 * t**3 - 3 * t**2 + 1, t**3 - 2 * t**2 + t, t**3 - t**2, -2 * t**3 + 3 * t**2]
+    C = sp.Matrix([t**3 - t + 2, 4 * t**2 - t**3])
+    Cd = C.diff(t)
+    herm = C.subs(t, 0) * H[0] + Cd.subs(t, 0) * H[1] + Cd.subs(t, 1) * H[2] + C.subs(t, 1) * H[3]
+    assert (herm - C).applyfunc(sp.expand) == sp.zeros(2, 1)
+    return verified(f"the curve (t^4 - 2t^3 + t, t^5 + 3t^3), nodes 0, 1/2, 1: the box remainder (12.74) contains the curve at {count} exact points; "
+                    "the componentwise xi of (12.72) differ (xi_x != xi_y at t = 1/4); (12.75) reproduces a cubic exactly (sympy)",
+                    compared="printed (12.70)-(12.75) vs exact Lagrange/Hermite interpolation in sympy", reference="sympy")

@@ -63,7 +63,7 @@ def interval_arithmetic():
                           compared="printed (12.3), (12.5), (12.10) vs exact evaluation of the set definition (12.2)", reference="exact")
 
 
-@claim(doc=DOC, section="12.2", ref="(12.11)-(12.21)", covers=["§12.2", "§12.2.1"],
+@claim(doc=DOC, section="12.2", ref="(12.11)-(12.21)", covers=["§12.2", "§12.2.1", "(12.34)"],
        statement="boxes add componentwise (12.13); a Bezier curve with control points in [P_k] lies in [P](t) = sum [P_k] B_k; the affine map of intervals, de Casteljau (12.19) with sides (12.20) giving the subdivided curves; centered form [P_k] = center + e_k [-1, 1] (12.21)")
 def interval_bezier_curves():
     rng = random.Random(1211)

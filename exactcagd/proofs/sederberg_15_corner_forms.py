@@ -47,3 +47,45 @@ def corner_fundamental_forms():
     return verified("bidegree (3, 2), a random rational patch: every printed corner quantity equals sympy's derivative of "
                     "(15.45) at (0, 0); (15.46) with (15.52), (15.53) gives (15.54)",
                     compared="printed (15.51)-(15.53) vs sympy differentiation of the rational patch (15.45)", reference="sympy")
+
+
+@claim(doc="sederberg", section="15.7.1", ref="(15.12)", statement="P(s, t) = sum_{i=0}^{27} w_i P_i B_i(s, t) / sum_{i=1}^{n} w_i B_i(s, t)")
+def tspline_sum_limits():
+    from exactcagd.proofs import _ledger as L
+
+    def same_control_points(limits):
+        (lo_num, hi_num), (lo_den, hi_den) = limits
+        # a rational surface needs numerator and denominator over the same weighted control points; with 28 points
+        # (i = 0..27) and unit weights the denominator must be the partition of unity over those 28 functions
+        return None if (lo_num, hi_num) == (lo_den, hi_den) else f"numerator over i = {lo_num}..{hi_num}, denominator over i = {lo_den}..{hi_den}"
+
+    n = sp.Symbol("n")
+    return L.erratum(
+        "sum_{i=0}^{27} in the numerator, sum_{i=1}^{n} in the denominator",
+        "sum_{i=0}^{27} in both (the 28 control points of the example)",
+        "the two sums of one rational form must run over the same control points",
+        printed_form=((0, 27), (1, n)), corrected_form=((0, 27), (0, 27)), check=L.predicate(same_control_points), reference="text",
+    )
+
+
+@claim(doc="sederberg", section="15.9.2", ref="(15.58)", statement="r(u, v) = sum_{i+j+k=n} w_ijk P_ijk B^n_ijk(u, v) / sum_{i+j+k+n} w_ijk B^n_ijk(u, v)")
+def triangular_patch_index():
+    from exactcagd.proofs import _ledger as L
+
+    n = 3
+    target = {(i, j, n - i - j) for i in range(n + 1) for j in range(n + 1 - i)}
+
+    def selects_degree_n(condition):
+        got = {(i, j, k) for i in range(n + 1) for j in range(n + 1) for k in range(n + 1) if condition(i, j, k, n) is True}
+        return None if got == target else f"the condition selects {len(got)} index triples, the degree-{n} triangle has {len(target)}"
+
+    u, v = sp.symbols("u v")
+    B = lambda i, j, k: sp.factorial(n) / (sp.factorial(i) * sp.factorial(j) * sp.factorial(k)) * u**i * v**j * (1 - u - v) ** k  # noqa: E731
+    assert sp.expand(sum(B(*ijk) for ijk in target) - 1) == 0  # the corrected denominator with unit weights is 1
+    return L.reconstructed(
+        "denominator sum over i+j+k+n",
+        "denominator sum over i+j+k=n (as in the numerator)",
+        "'+' for '=' in the extraction; with i+j+k=n the unit-weight denominator is the partition of unity (sympy)",
+        printed_form=lambda i, j, k, n_: i + j + k + n_, corrected_form=lambda i, j, k, n_: i + j + k == n_,
+        check=L.predicate(selects_degree_n),
+    )

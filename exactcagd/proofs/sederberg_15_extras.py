@@ -248,7 +248,7 @@ def _example_surface():
     return BezierSurface([[[i, j, _Z[i][j]] for j in range(4)] for i in range(4)])
 
 
-@claim(doc="sederberg", section="15.4.2", ref="Example (hodographs)",
+@claim(doc="sederberg", section="15.4.2", ref="Example (hodographs)", covers=["(15.6)"],
        statement="z-coordinates of the second hodographs P_ss, P_st, P_tt as printed; M1 = 48, M2 = 36, M3 = 36")
 def example_hodographs():
     S = _example_surface()
@@ -326,7 +326,7 @@ def cn_patches():
 
 
 # ---------------------------------------------------------------------------- 15.7 T-splines
-@claim(doc="sederberg", section="15.7.1", ref="rectangular T-mesh", statement="if a T-mesh forms a rectangular grid, the T-spline degenerates to a B-spline surface")
+@claim(doc="sederberg", section="15.7.1", ref="rectangular T-mesh", covers=["(15.7)", "(15.8)"], statement="if a T-mesh forms a rectangular grid, the T-spline degenerates to a B-spline surface")
 def tmesh_grid():
     rng = _rng(1571)
     ku = [0, 0, 0, 0, 1, 3, 4, 4, 4, 4]
@@ -379,7 +379,7 @@ def tspline_numbers():
     return verified("every printed polar value, and both basis values (explicit B-spline = de Boor)")
 
 
-@claim(doc="sederberg", section="15.7.1", ref="B_10(3,4)", statement="B_10(3,4) = N[0,1,2,5,7](3) N[0,1,3,5,6](4) = 253/1440")
+@claim(doc="sederberg", section="15.7.1", ref="B_10(3,4)", covers=["(15.9)", "(15.10)", "(15.11)", "(15.13)"], statement="B_10(3,4) = N[0,1,2,5,7](3) N[0,1,3,5,6](4) = 253/1440")
 def tspline_b10():
     a = bx.basis_function([0, 1, 2, 5, 7], 3)
     b = bx.basis_function([0, 1, 2, 4, 5], 3)
@@ -440,7 +440,7 @@ def _tmesh(seed=1574, weights=False):
 _INSIDE = [(mpq(5, 2), mpq(5, 2)), (mpq(3), mpq(3)), (mpq(3, 2), mpq(7, 2)), (mpq(13, 4), mpq(7, 4)), (mpq(31, 10), mpq(29, 10))]
 
 
-@claim(doc="sederberg", section="15.7.4", ref="(15.19)-(15.23)", statement="P~_j = sum_i c_i^j P_i maps a T-spline to an equivalent one in a superspace (here: the tensor B-spline space)")
+@claim(doc="sederberg", section="15.7.4", ref="(15.19)-(15.23)", covers=["(15.18)"], statement="P~_j = sum_i c_i^j P_i maps a T-spline to an equivalent one in a superspace (here: the tensor B-spline space)")
 def matrix_m():
     M = _tmesh(weights=True)
     B = M.to_bspline()

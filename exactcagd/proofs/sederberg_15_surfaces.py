@@ -52,7 +52,7 @@ def surface_equation():
     return verified("rational 2 x 3 patch: exact tensor de Casteljau == printed quotient (sympy) at 4 parameter pairs")
 
 
-@claim(DOC, "15.1", "(15.3), (15.4)", "bicubic blending functions laid out like the control points: entry of P_ij is B_i^3(s) B_j^3(t)")
+@claim(DOC, "15.1", "(15.3), (15.4)", "bicubic blending functions laid out like the control points: entry of P_ij is B_i^3(s) B_j^3(t)", covers=["(15.1)"])
 def bicubic_blending_layout():
     printed_rows = [  # (15.4) top row first; columns s-index 0..3
         [(1 - s_) ** 3 * t_**3, 3 * s_ * (1 - s_) ** 2 * t_**3, 3 * s_**2 * (1 - s_) * t_**3, s_**3 * t_**3],

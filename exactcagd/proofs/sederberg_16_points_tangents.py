@@ -55,11 +55,11 @@ def _sym_curve_derivative(c, t):
     return [(N.diff(T).subs(T, t) - N.subs(T, t) / w * w1) / w for N in comps[:-1]]
 
 
-def _both(section_a, ref_a, section_b, ref_b, statement):
+def _both(section_a, ref_a, section_b, ref_b, statement, covers_a=(), covers_b=()):
     """Register one check under its 15.8 and its chapter-16 equation numbers."""
 
     def deco(func):
-        claim(doc="sederberg", section=section_a, ref=ref_a, statement=statement)(func)
+        claim(doc="sederberg", section=section_a, ref=ref_a, statement=statement, covers=covers_a)(func)
 
         def alias():
             return func()
@@ -68,14 +68,15 @@ def _both(section_a, ref_a, section_b, ref_b, statement):
         alias.__qualname__ = alias.__name__
         alias.__module__ = func.__module__
         globals()[alias.__name__] = alias
-        claim(doc="sederberg", section=section_b, ref=ref_b, statement=statement + " (repeated in chapter 16)")(alias)
+        claim(doc="sederberg", section=section_b, ref=ref_b, statement=statement + " (repeated in chapter 16)", covers=covers_b)(alias)
         return func
 
     return deco
 
 
 @_both("15.8", "(15.26)-(15.29)", "16", "(16.3)-(16.6)",
-       "P(t) = (1-t) Q(t) + t R(t); q - r is tangent; dp/dt = n R_w Q_w / ((1-t) Q_w + t R_w)^2 (r - q)")
+       "P(t) = (1-t) Q(t) + t R(t); q - r is tangent; dp/dt = n R_w Q_w / ((1-t) Q_w + t R_w)^2 (r - q)",
+       covers_a=("(15.24)", "(15.25)"), covers_b=("(16.1)", "(16.2)"))
 def curve_tangent():
     rng = _rng(158)
     for n in (1, 2, 3, 5):
@@ -112,7 +113,8 @@ def pseudo_basis():
 
 
 @_both("15.8", "(15.36)-(15.42)", "16", "(16.13)-(16.19)",
-       "P = (1-s)(1-t)P^00 + s(1-t)P^10 + (1-s)t P^01 + st P^11; p_s is parallel to Pi((1-t)P^00 + tP^01) - Pi((1-t)P^10 + tP^11), p_t likewise")
+       "P = (1-s)(1-t)P^00 + s(1-t)P^10 + (1-s)t P^01 + st P^11; p_s is parallel to Pi((1-t)P^00 + tP^01) - Pi((1-t)P^10 + tP^11), p_t likewise",
+       covers_a=("(15.34)", "(15.35)"), covers_b=("(16.11)", "(16.12)"))
 def surface_tangents():
     rng = _rng(1584)
     for m, n in ((2, 3), (3, 3), (1, 2)):
