@@ -1,6 +1,7 @@
 """Reference records: the exchange format (float companions, algebraic numbers) and every kind's
 exact answer, each checked against an independent reference (gmpy2 mpfr rounding, sympy
 substitution / symbolic B-spline bases / real_roots, mpmath root refinement)."""
+import itertools
 import json
 from fractions import Fraction
 
@@ -107,7 +108,7 @@ def test_surface_eval_against_sympy_normal():
         net, w = inp["control_points"], inp.get("weights")
         l, m = len(net) - 1, len(net[0]) - 1
         B = lambda n, i, x: sp.binomial(n, i) * x**i * (1 - x) ** (n - i)
-        wt = lambda i, j: Q(w[i][j]) if w else 1
+        wt = lambda i, j, w=w: Q(w[i][j]) if w else 1
         den = sum(B(l, i, u) * B(m, j, v) * wt(i, j) for i in range(l + 1) for j in range(m + 1))
         S = sp.Matrix([sum(B(l, i, u) * B(m, j, v) * wt(i, j) * Q(net[i][j][k]) for i in range(l + 1) for j in range(m + 1)) / den for k in range(3)])
         N = S.diff(u).cross(S.diff(v))
@@ -166,7 +167,7 @@ def test_elevation_and_subdivision_against_sympy():
             continue
         c = Q(inp["param"])
         s = sp.Rational(2, 7)
-        full = lambda x: _bernstein(inp["control_points"], inp.get("weights"), x)
+        full = lambda x, inp=inp: _bernstein(inp["control_points"], inp.get("weights"), x)
         assert _bernstein(ans["left"]["control_points"], ans["left"].get("weights"), s) == full(c * s)
         assert _bernstein(ans["right"]["control_points"], ans["right"].get("weights"), s) == full(c + (1 - c) * s)
 
@@ -181,7 +182,7 @@ def test_compose_against_sympy_substitution():
         net, w = surf["control_points"], surf.get("weights")
         l, m = len(net) - 1, len(net[0]) - 1
         B = lambda n, i, x: sp.binomial(n, i) * x**i * (1 - x) ** (n - i)
-        wt = lambda i, j: Q(w[i][j]) if w else 1
+        wt = lambda i, j, w=w: Q(w[i][j]) if w else 1
         s = sp.Rational(3, 11)
         uu, vv = _bernstein(curve["control_points"], curve.get("weights"), s)
         at = {u: uu, v: vv}
@@ -265,7 +266,7 @@ def test_intersections_against_mpmath_and_counts():
             assert max(h["multiplicity"] or 1 for h in ans["intersections"]) >= 2
         if rec["family"] == "clustered":
             ts = sorted(float.fromhex(h["t1"]["f64"]) for h in ans["intersections"])
-            assert any(b - a < 2.0**-40 for a, b in zip(ts, ts[1:]))
+            assert any(b - a < 2.0**-40 for a, b in itertools.pairwise(ts))
 
 
 def test_roots_against_sympy_real_roots():
@@ -343,7 +344,7 @@ def test_every_exact_value_has_a_correctly_rounded_companion():
                     continue
                 lo, hi = (Fraction(v) for v in item["interval"])
                 poly = item["poly"]
-                value = lambda x: sum(c * x**k for k, c in enumerate(poly))
+                value = lambda x, poly=poly: sum(c * x**k for k, c in enumerate(poly))
                 if lo == hi:
                     assert value(lo) == 0 and item["f64"] == float.hex(_mpfr_round(lo))
                 else:
