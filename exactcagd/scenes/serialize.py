@@ -56,6 +56,9 @@ def to_json_value(obj):
     if isinstance(obj, BezierSurface):
         data = obj.to_dict()
         data["type"] = "bezier_surface"
+        data["control_net_float"] = _floats(obj.net_array())
+        if obj.is_rational:
+            data["weights_float"] = _floats(obj.weights_array())
         return data
     if isinstance(obj, dict):
         return {str(k): to_json_value(v) for k, v in obj.items()}

@@ -584,19 +584,20 @@ def continuity_order(first: BezierCurve, second: BezierCurve, h_first=1, h_secon
 def bezier_chain_to_bspline(curves, spans=None) -> BSplineCurve:
     """Combine a chain of Bézier curves of one degree into one B-spline (notes 6.12, any degree).
 
-    Parameters
-    ----------
-    curves : sequence of :class:`BezierCurve` (polynomial, same degree, each starting where
-        the previous one ends).
-    spans : parameter interval lengths, optional.  Default: the first curve gets 1;
-        each next curve gets the length that makes the junction ``C^1`` when the last
-        leg of the previous control polygon and the first leg of the next are
-        parallel and equally directed (notes 6.12: ``|P_n - P_{n-1}| (e - k_{i+1}) =
-        |Q_1 - P_n| (k_{i+1} - k_i)``, in the corrected form of the ledger), else 1.
-
     The exact continuity order ``r`` at every junction (:func:`continuity_order`) sets
     the knot multiplicity ``p - r``; the control points are the blossoms of the pieces
     (exact knot removal), so the result reproduces every input curve exactly.
+
+    Parameters
+    ----------
+    curves : sequence of BezierCurve
+        Polynomial, of one degree, each starting where the previous one ends.
+    spans : sequence of numbers, optional
+        Parameter interval lengths.  Default: the first curve gets 1;
+        each next curve gets the length that makes the junction ``C^1`` when the last
+        leg of the previous control polygon and the first leg of the next are
+        parallel and equally directed (notes 6.12, in the corrected form of the ledger:
+        ``|P_n - P_{n-1}| (e - k_{i+1}) = |Q_1 - P_n| (k_{i+1} - k_i)``), else 1.
     """
     curves = list(curves)
     if not curves:
