@@ -106,3 +106,33 @@ def patch_definition():
                     "interpolates the four corners, Jacobian rank 2 at (1/3, 2/5)",
                     compared="printed (16.11), (16.12) vs sympy projection of the homogeneous sum and the rational form (15.2)",
                     reference="sympy")
+
+
+@claim(doc=DOC, section="16", ref="(16.9) argument of Q-hat",
+       statement="Pi(Q(t)) = Pi((1-t)^(n-1) Q^(u)) = Pi(Q^(t)), u = t/(1-t), Q^(u) = sum C(n-1, i) P_i u^i (printed the same in (15.32))",
+       covers=["(15.32)"])
+def pseudo_basis_argument():
+    rng = random.Random(169)
+    u = sp.Symbol("u")
+    cases = []
+    for n in (2, 3, 4):
+        pts, w = random_curve_data(rng, n)
+        H = [[wi * x for x in p] + [wi] for p, wi in zip(pts, w)]
+        Q = [sum(H[i][k] * _B(n - 1, i, t) for i in range(n)) for k in range(4)]  # (16.4)
+        Qhat = [sum(sp.binomial(n - 1, i) * H[i][k] * u**i for i in range(n)) for k in range(4)]  # (16.7)
+        cases.append((n, project(Q), Qhat))
+
+    def projects_like_Q(arg):
+        for n, pQ, Qhat in cases:
+            got = project([q.subs(u, arg) for q in Qhat])
+            bad = [k for k in range(3) if sp.cancel(got[k] - pQ[k]) != 0]
+            if bad:
+                tv = sp.Rational(1, 3)
+                return (f"at t = 1/3: Pi(Q^(arg)) = {[g.subs(t, tv) for g in got]}, Pi(Q(t)) = {[q.subs(t, tv) for q in pQ]} "
+                        f"(degree {n} curve)")
+        return None
+
+    return erratum("Pi(Q(t)) = Pi((1-t)^(n-1) Q^(u)) = Pi(Q^(t))", "... = Pi(Q^(u)), u = t/(1-t)",
+                   "Q^ is the pseudo-basis polynomial in u (16.7); evaluated at t it is a different point (n = 2, 3, 4 random "
+                   "rational curves, sympy). The same slip is printed in (15.32)",
+                   printed_form=t, corrected_form=t / (1 - t), check=L.predicate(projects_like_Q), reference="sympy")

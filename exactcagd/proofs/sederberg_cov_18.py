@@ -229,3 +229,24 @@ def base_point_factor():
     return verified("n = 2, 3, 4 curves with a base point at a random tau (sympy): t - tau divides X, Y, W exactly and the quotient "
                     "is a degree n - 1 curve with the same x = X/W, y = Y/W",
                     compared="printed (18.51) vs sympy polynomial division", reference="sympy")
+
+
+@claim(doc=DOC, section="18.2.2", ref="weights of P0 and P2",
+       statement="P0 lies at the intersection of L00 and L10 with weight d00 d10 sin(theta0), d_ij = sqrt(a_ij^2 + b_ij^2); P2 at L01 x L11 with weight d01 d11 sin(theta1)")
+def pencil_control_point_weights():
+    d = sp.symbols("d00 d10 d01 d11", positive=True)
+    al = sp.symbols("alpha00 alpha10 alpha01 alpha11", real=True)
+    cs = sp.symbols("c00 c10 c01 c11")
+    # a line with normal of length d at angle alpha: (d cos alpha, d sin alpha, c)
+    Lines = [sp.Matrix([di * sp.cos(ai), di * sp.sin(ai), ci]) for di, ai, ci in zip(d, al, cs)]
+    L00, L10, L01, L11 = Lines
+    for A, B, da, db, aa, ab in ((L00, L10, d[0], d[1], al[0], al[1]), (L01, L11, d[2], d[3], al[2], al[3])):
+        P = A.cross(B)
+        assert sp.simplify(P.dot(A)) == 0  # on both lines
+        assert sp.simplify(P.dot(B)) == 0
+        # the weight (third homogeneous coordinate) is d d' sin(theta), theta the angle from the first normal to the second
+        assert sp.simplify(P[2] - da * db * sp.sin(ab - aa)) == 0
+    # (18.27) uses exactly these: P0 = L00 x L10, P2 = L01 x L11 (the intersections of the pencils at t = 0 and t = 1)
+    return verified("symbolic lines (d cos alpha, d sin alpha, c) (sympy): L x L' lies on both lines and its weight is "
+                    "d d' sin(alpha' - alpha); theta is the signed angle between the lines (Figure 18.7, which fixes its sense, is lost)",
+                    compared="printed weights of P0, P2 vs sympy cross products of symbolic lines", reference="sympy")
