@@ -226,7 +226,10 @@ def sympy_to_mpoly(expr, gens, ctx=None):
     ctx = zctx(tuple(str(g) for g in gens)) if ctx is None else ctx
     poly = expr if isinstance(expr, sympy.Poly) and tuple(expr.gens) == tuple(gens) else sympy.Poly(sympy.sympify(expr), *gens)
     if not poly.domain.is_Exact or not (poly.domain.is_ZZ or poly.domain.is_QQ):
-        poly = poly.set_domain("QQ")  # raises for non-rational coefficients
+        try:
+            poly = poly.set_domain("QQ")  # raises for non-rational coefficients
+        except sympy.polys.polyerrors.BasePolynomialError:
+            raise InputError(f"{str(expr)[:60]}: coefficients must be rational numbers in {tuple(gens)}, got domain {poly.domain}") from None
     items = [(m, sympy.Rational(c)) for m, c in poly.terms()]
     den = 1
     for _, c in items:

@@ -184,6 +184,10 @@ def groebner(polys, gens, order: str = "lex") -> list[sympy.Poly]:
 def normal_form(f, basis, gens, order: str = "lex"):
     """Remainder of ``f`` on division by a Gröbner ``basis`` (sympy ``reduced``)."""
     gens = _check(gens, order)
+    if not isinstance(basis, (list, tuple)):
+        raise InputError(f"basis: expected a list of polynomials, got {type(basis).__name__}")
+    basis = [polynomial_input(b, f"basis[{i}]") for i, b in enumerate(basis)]
+    f = polynomial_input(f, "f")
     exprs = [b.as_expr() if isinstance(b, sympy.Poly) else b for b in basis]
     fe = f.as_expr() if isinstance(f, sympy.Poly) else sympy.sympify(f)
     if not exprs:
@@ -207,8 +211,10 @@ def ideals_equal(A, B, gens) -> bool:
 
 def eliminate(polys, eliminated, kept, order: str = "lex") -> list[sympy.Poly]:
     """Generators of the elimination ideal ``<polys> ∩ Q[kept]`` (lex, eliminated > kept)."""
-    eliminated = [sympy.sympify(v) for v in eliminated]
-    kept = [sympy.sympify(v) for v in kept]
+    if not isinstance(eliminated, (list, tuple)) or not isinstance(kept, (list, tuple)):
+        raise InputError("eliminated and kept must be lists of sympy Symbols")
+    eliminated = [symbol_input(v, "eliminated") for v in eliminated]
+    kept = [symbol_input(v, "kept") for v in kept]
     G = groebner(polys, eliminated + kept, order)
     out = []
     for g in G:

@@ -19,6 +19,7 @@ from __future__ import annotations
 import sympy
 
 from ..errors import InputError, NotSupportedError
+from ..exact.scalars import to_rational, to_sympy
 from ._poly import T_SYM, X_SYM, Y_SYM
 
 __all__ = [
@@ -139,7 +140,7 @@ def undetermined_coefficients(points, monomials):
 
 def conic_through_points(points):
     """The conic ``c20 x^2 + c11 xy + c02 y^2 + c10 x + c01 y + c00`` through five points (19.6)."""
-    if len(points) != 5:
+    if not isinstance(points, (list, tuple)) or len(points) != 5:
         raise InputError("a conic is fixed by five points")
     monos = [X_SYM**2, X_SYM * Y_SYM, Y_SYM**2, X_SYM, Y_SYM, 1]
     sols = undetermined_coefficients(points, monos)
@@ -160,8 +161,10 @@ def circle_through_points(p1, p2, p3):
     Solves ``A x + B y + C = x^2 + y^2``; ``a = A/2``, ``b = B/2``, ``r^2 = C + a^2 + b^2``.
     """
     rows, rhs = [], []
-    for p in (p1, p2, p3):
-        px, py = (sympy.Rational(str(v)) for v in p)
+    for k, p in enumerate((p1, p2, p3)):
+        if isinstance(p, (str, bytes, bytearray)) or not hasattr(p, "__len__") or len(p) != 2:
+            raise InputError(f"p{k + 1}: expected a point (x, y), got {str(p)[:40]!r}")
+        px, py = (to_sympy(to_rational(v, where=f"p{k + 1}")) for v in p)
         rows.append([px, py, 1])
         rhs.append(px**2 + py**2)
     M = sympy.Matrix(rows)

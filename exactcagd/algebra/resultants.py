@@ -30,6 +30,7 @@ import flint
 import sympy
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import InputError
 from ..exact.scalars import to_rational
 from ._poly import mpoly_to_sympy, polynomial_input, symbol_input, zctx
@@ -135,6 +136,9 @@ def echelon_bareiss(matrix) -> tuple[list[list], int]:
 
 # ---------------------------------------------------------------------------- matrices
 def _trim(a: list) -> list:
+    if isinstance(a, (str, bytes, bytearray)) or not hasattr(a, "__len__") or len(a) == 0:
+        raise InputError(f"expected a non-empty list of coefficients, got {str(a)[:40]!r}")
+    limits.check("max_degree", len(a) - 1, "coefficient list: degree")
     a = list(a)
     while len(a) > 1 and a[-1] == 0:
         a.pop()
@@ -379,7 +383,7 @@ def discriminant(f, var, normalized: bool = False):
     (ledger erratum 19.4).  ``normalized=True`` divides by
     ``(-1)^(n (n - 1) / 2) * a_n`` to give the classical ``b^2 - 4ac``.
     """
-    var = sympy.sympify(var)
+    f, var = polynomial_input(f, "f"), symbol_input(var, "var")
     fe = f.as_expr() if isinstance(f, sympy.Poly) else sympy.sympify(f)
     r = resultant(fe, sympy.diff(fe, var), var)
     if not normalized:
@@ -392,15 +396,21 @@ def discriminant(f, var, normalized: bool = False):
 
 # ---------------------------------------------------------------------------- common roots
 def _univariate(f, var=None) -> tuple[list[mpq], sympy.Symbol]:
+    if var is not None:
+        var = symbol_input(var, "var")
     if isinstance(f, (list, tuple)):
-        return [to_rational(c) for c in f], (var or sympy.Symbol("t"))
+        return [to_rational(c, where=f"coefficient {k}") for k, c in enumerate(f)], (var or sympy.Symbol("t"))
+    f = polynomial_input(f, "f")
     e = f.as_expr() if isinstance(f, sympy.Poly) else sympy.sympify(f)
     if var is None:
         free = sorted(e.free_symbols, key=str)
         if len(free) > 1:
             raise InputError(f"univariate polynomial expected, found variables {free}")
         var = free[0] if free else sympy.Symbol("t")
-    p = sympy.Poly(e, var, domain="QQ")
+    try:
+        p = sympy.Poly(e, var, domain="QQ")
+    except sympy.polys.polyerrors.BasePolynomialError:
+        raise InputError(f"{str(e)[:60]}: expected a univariate polynomial in {var} with rational coefficients") from None
     return [mpq(int(c.p), int(c.q)) for c in p.all_coeffs()[::-1]], var
 
 

@@ -29,9 +29,10 @@ from dataclasses import dataclass
 
 import flint
 
+from .. import limits
 from ..errors import InputError, NotSupportedError
 from ..exact.algebraic import real_roots
-from ._poly import X_SYM, XY, Y_SYM, sympy_to_mpoly, zctx
+from ._poly import X_SYM, XY, Y_SYM, polynomial_input, symbol_input, sympy_to_mpoly, zctx
 from .numberfield import NumberField, algebraic_value
 
 __all__ = ["Orbit", "solve_bivariate", "common_points", "to_xy_mpoly"]
@@ -75,7 +76,7 @@ def to_xy_mpoly(p, gens=None):
     if isinstance(p, flint.fmpz_mpoly):
         return XY.from_dict({tuple(m): int(c) for m, c in p.to_dict().items()})
     gens = (X_SYM, Y_SYM) if gens is None else gens
-    q, _ = sympy_to_mpoly(p, gens, XY)
+    q, _ = sympy_to_mpoly(polynomial_input(p, "f"), gens, XY)
     return q
 
 
@@ -105,7 +106,14 @@ def solve_bivariate(polys, gens=None, max_shear: int = 40) -> list[Orbit]:
     InputError
         when the polynomials have a common factor (infinitely many solutions).
     """
+    if not isinstance(polys, (list, tuple)):
+        raise InputError(f"polys: expected a list of polynomials, got {type(polys).__name__}")
+    if gens is not None and (not isinstance(gens, (list, tuple)) or len(gens) != 2):
+        raise InputError(f"gens: expected two sympy Symbols, got {str(gens)[:40]!r}")
+    gens = None if gens is None else tuple(symbol_input(g, "gens") for g in gens)
     P = [to_xy_mpoly(p, gens) for p in polys]
+    for k, p in enumerate(P):  # Bezout: up to deg(p) deg(q) solutions, each an algebraic number of that degree
+        limits.check("max_implicit_degree", p.total_degree(), f"polys[{k}]: total degree")
     P = [p for p in P if p != 0]
     if len(P) < 2:
         raise InputError("need at least two non-zero polynomials for a finite solution set")

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 import flint
 import sympy
 
+from .. import limits
 from ..errors import DegreeError, InputError, NotSupportedError
 from ..exact.scalars import to_sympy
 from ._poly import mpoly_to_sympy, zctx
@@ -91,9 +92,14 @@ class SurfaceParametrization:
     @classmethod
     def from_bezier_surface(cls, surface) -> "SurfaceParametrization":
         """Tensor-product :class:`BezierSurface` (3-D), power form in ``(s, t) = (u, v)``."""
+        from ..geometry.bezier_surface import BezierSurface
+
+        if not isinstance(surface, BezierSurface):
+            raise InputError(f"surface: expected a BezierSurface, got {type(surface).__name__}")
         if surface.dimension != 3:
             raise InputError(f"surface implicitization needs a 3-D surface, got dimension {surface.dimension}")
         l, m = surface.degree
+        limits.check("max_surface_implicit", 2 * l * m, f"implicit degree 2 l m of a degree ({l}, {m}) patch")
         hom = surface.homogeneous()
         s, t = S_SYM, T_SYM_S
         Bu = [sympy.binomial(l, i) * s**i * (1 - s) ** (l - i) for i in range(l + 1)]

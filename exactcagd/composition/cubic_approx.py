@@ -39,7 +39,7 @@ import numpy as np
 from gmpy2 import mpq
 
 from ..errors import InputError
-from ..exact.scalars import rational_str, to_rational
+from ..exact.scalars import rational_str, to_count, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from .distance_bound import distance_bound
@@ -340,6 +340,9 @@ def approximate_cubic(surface, curve, tol, *, max_segments: int = 64, samples: i
     from .splines import compose_spline
 
     options = {"max_segments": max_segments, "samples": samples, "iterations": iterations, "reparam_degree": reparam_degree}
+    for name in ("max_segments", "iterations", "reparam_degree") + (("samples",) if samples is not None else ()):
+        if to_count(options[name], where=name) < 1:
+            raise InputError(f"{name} must be a positive integer, got {options[name]!r}")
     if isinstance(surface, BezierSurface) and isinstance(curve, BezierCurve):
         return approximate_cubic_curve(compose(surface, curve, method=method), tol, **options)
     tol = to_rational(tol, where="tol")

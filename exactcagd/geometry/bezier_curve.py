@@ -69,7 +69,11 @@ class BezierCurve:
         Weights must be non-zero; they may be negative here (the result of an exact
         construction), which :meth:`__init__` would reject.
         """
+        if not isinstance(hom, np.ndarray):  # user data: checked like control points
+            hom = point_array(hom, 1, "homogeneous control points", bezier=True)
         hom = np.asarray(hom, dtype=object)
+        if hom.ndim != 2 or hom.shape[1] < 2:
+            raise InputError(f"homogeneous control points: expected shape (n + 1, d + 1) with d >= 1, got {hom.shape}")
         points, weights = dehomogenize(hom)
         if not rational and all(w == weights[0] for w in weights):
             return cls._trusted(points, None)
@@ -293,6 +297,8 @@ class BezierCurve:
         import sympy
 
         t = sympy.Symbol("t") if t is None else t
+        if not isinstance(t, sympy.Expr):  # a number: exact, through to_rational
+            t = to_sympy(to_rational(t, where="t"))
         n = self.degree
         basis = [sympy.binomial(n, i) * t**i * (1 - t) ** (n - i) for i in range(n + 1)]
         hom = self.homogeneous()
@@ -331,8 +337,22 @@ class BezierCurve:
         return curve
 
     def __repr__(self) -> str:
+        from ._display import points_preview
+
         kind = "rational " if self.is_rational else ""
-        return f"<{kind}BezierCurve degree={self.degree} dimension={self.dimension}>"
+        return f"<{kind}BezierCurve degree={self.degree} dimension={self.dimension} points={points_preview(self.control_points)}>"
+
+    def _repr_latex_(self) -> str:
+        """Jupyter shows the curve typeset: ``P(t) =`` its sympy form."""
+        from ._display import latex
+
+        return latex(self, "P(t)")
+
+    def plot(self, ax=None, **style):
+        """Draw the curve and its control polygon (matplotlib; see :func:`exactcagd.plotting.plot`)."""
+        from ._display import plot
+
+        return plot(self, ax=ax, **style)
 
 
 def _poly_degree(p) -> int:

@@ -38,10 +38,11 @@ import bisect
 import numpy as np
 from gmpy2 import mpq
 
+from .. import limits
 from ..errors import DegreeError, DomainError, InputError, KnotError, NotSupportedError
 from ..exact import bernstein as bz
 from ..exact import knots as kn
-from ..exact.scalars import to_rational
+from ..exact.scalars import to_count, to_rational
 from ..geometry._validate import dehomogenize, homogeneous, point_array, weight_array
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bspline import BSplineCurve
@@ -455,7 +456,8 @@ def periodic_bspline(control_points, degree: int, intervals=None, weights=None) 
     """
     pts = point_array(control_points, 1, "control_points")
     n = pts.shape[0]
-    p = int(degree)
+    p = to_count(degree, where="degree", error=DegreeError)
+    limits.check("max_degree", p, "periodic_bspline: degree")
     if p < 1:
         raise DegreeError("a periodic B-spline needs degree >= 1")
     if n < p + 1:

@@ -219,7 +219,7 @@ def gram_matrix(knots, degree: int, derivative: int = 0) -> np.ndarray:
     n = len(knots) - degree - 1
     if n < 1:
         raise KnotError(f"knots: {len(knots)} knots leave no basis function of degree {degree}")
-    limits.check("max_control_points", n, "gram_matrix: basis functions")
+    limits.check("max_control_points", n * n, f"gram_matrix: {n} x {n} entries")
     knots = tuple(to_rational(k, where=f"knots[{i}]") for i, k in enumerate(knots))
     spline = BSplineCurve(_identity(n), knots)
     G = np.empty((n, n), dtype=object)

@@ -101,6 +101,8 @@ def extend(values, count: int, degree: int | None = None) -> list:
     count = to_count(count, where="count")
     limits.check("max_control_points", count, "extend: count")
     vals = _values(values)
+    if any(v is None for v in vals):
+        raise InputError("values: unknown values (None) cannot be extended; see solve_missing")
     n = len(vals) - 1 if degree is None else to_count(degree, where="degree", error=DegreeError)
     table = difference_table(vals)
     for row in table[n + 1:]:
@@ -138,6 +140,7 @@ def _evaluator(poly, basis):
         return lambda t: np.array(bz.de_casteljau(pts, t), dtype=object), poly.degree
     c = bz.as_coefficients(poly, "polynomial")
     n = c.shape[0] - 1
+    limits.check("max_degree", n, "polynomial: degree")
     if basis == "bernstein":
         return lambda t: bz.de_casteljau(c, t), n
     if basis == "power":
@@ -276,7 +279,9 @@ def _round_half_up(x) -> int:
 
 def rasterize(curve: BezierCurve, steps: int | None = None) -> list:
     """Pixels ``round(P(i / steps))``, exact (forward differencing of the coordinates), ``i = 0..steps``."""
-    steps = rasterization_steps(curve) if steps is None else int(steps)
+    steps = rasterization_steps(curve) if steps is None else to_count(steps, where="steps")
+    if steps < 1:
+        raise InputError(f"steps must be a positive integer, got {steps}")
     pts = forward_difference(curve, 0, mpq(1, steps), steps + 1)
     return [(_round_half_up(p[0]), _round_half_up(p[1])) for p in pts]
 

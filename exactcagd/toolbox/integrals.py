@@ -260,6 +260,7 @@ def max_bernstein(n: int, m: int):
     """``max_{[0,1]} B^n_m = C(n,m) (m/n)^m ((n-m)/n)^(n-m)`` (at ``t = m/n``); for ``m = n/2`` it is
     ``C(n, n/2) / 2^n`` as in (20.7)."""
     n, m = to_count(n, where="n", error=DegreeError), to_count(m, where="m", error=DegreeError)
+    limits.check("max_degree", n, "max_bernstein: n")
     if not (0 <= m <= n):
         raise DegreeError("need 0 <= m <= n")
     if n == 0:  # B^0_0 = 1
