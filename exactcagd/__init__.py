@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 from ._version import __version__
 
 if TYPE_CHECKING:  # what type checkers and IDEs see; at run time see __getattr__
-    from . import errors
+    from . import errors, limits
     from .composition import compose
     from .exact.scalars import float_policy, set_float_policy, to_rational
     from .geometry.bezier_curve import BezierCurve
@@ -29,6 +29,7 @@ if TYPE_CHECKING:  # what type checkers and IDEs see; at run time see __getattr_
 #: public name -> module that defines it (relative to this package)
 _LAZY = {
     "errors": ".errors",
+    "limits": ".limits",
     "to_rational": ".exact.scalars",
     "float_policy": ".exact.scalars",
     "set_float_policy": ".exact.scalars",
@@ -48,7 +49,7 @@ def __getattr__(name: str) -> Any:
     except KeyError:
         raise AttributeError(f"module 'exactcagd' has no attribute {name!r}") from None
     module = importlib.import_module(module_name, __name__)
-    value = module if name == "errors" else getattr(module, name)
+    value = module if name in ("errors", "limits") else getattr(module, name)
     globals()[name] = value  # later lookups skip __getattr__
     return value
 

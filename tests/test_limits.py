@@ -157,3 +157,99 @@ def test_input_bits_limit_on_integers_and_raising_it():
 def test_malformed_number_strings(text):
     with pytest.raises(InputError):
         to_rational(text)
+
+
+# ---------------------------------------------------------------- the cases, through the public API
+import time  # noqa: E402
+
+from exactcagd import BezierCurve, BezierSurface, BSplineCurve, compose  # noqa: E402
+from exactcagd.errors import WeightError  # noqa: E402
+
+
+def _refused_quickly(call, limit_name, estimate):
+    start = time.perf_counter()
+    with pytest.raises(LimitError) as info:
+        call()
+    assert time.perf_counter() - start < 5, "the limit must be checked before the work"
+    assert limit_name in str(info.value) and str(estimate) in str(info.value)
+
+
+def test_elevate_by_a_million_is_refused_with_its_estimate():
+    curve = BezierCurve([[0, 0], [1, 2], [2, 0]])
+    _refused_quickly(lambda: curve.elevate(10**6), "max_degree", 10**6 + 2)
+    with limits.raised(max_degree=12):
+        assert curve.elevate(10).degree == 12
+
+
+def test_a_100k_point_curve_is_refused_before_conversion():
+    points = [[i, 0] for i in range(100_000)]
+    _refused_quickly(lambda: BezierCurve(points), "max_degree", 99_999)
+
+
+def test_long_bsplines_knot_checks_are_linear_and_the_point_limit_holds():
+    n = 20_000
+    start = time.perf_counter()
+    curve = BSplineCurve([[i, 0] for i in range(n)], knots=[0] * 4 + list(range(1, n - 3)) + [n - 3] * 4)
+    assert time.perf_counter() - start < 20
+    assert curve.evaluate(n - 3)[0] == n - 1  # a clamped spline ends at its last control point
+    with pytest.raises(LimitError, match="max_control_points"):
+        BSplineCurve([[0, 0]] * 100_001, knots=[0] * 4 + list(range(1, 99_998)) + [99_998] * 4)
+
+
+def test_composition_degree_is_estimated_before_work():
+    surface = BezierSurface([[[i, j, 0] for j in range(41)] for i in range(41)])
+    curve = BezierCurve([["1/2", k * mpq(1, 41) + mpq(1, 100)] for k in range(41)])
+    _refused_quickly(lambda: compose(surface, curve), "max_degree", 40 * (40 + 40))
+
+
+def test_degree_40_implicitization_is_refused_and_degree_3_is_not():
+    from exactcagd.algebra import implicitize
+
+    curve = BezierCurve([[k, (k * k) % 7] for k in range(41)])
+    _refused_quickly(lambda: implicitize(curve), "max_implicit_degree", 40)
+    cubic = implicitize(BezierCurve([[0, 0], [1, 0], [1, 1], [0, 1]]))
+    # independent reference: substitute the parametrization into the equation
+    x, y = cubic.gens
+    t = sympy.Symbol("t")
+    px = 3 * t * (1 - t) ** 2 + 3 * t**2 * (1 - t)
+    py = 3 * t**2 * (1 - t) + t**3
+    assert sympy.expand(cubic.as_expr().subs({x: px, y: py})) == 0
+
+
+def test_approximate_refuses_nonsense_snap_bits():
+    from exactcagd.curves_on_surfaces import approximate
+
+    surface = BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+    domain = BezierCurve([["1/4", "1/4"], ["3/4", "3/4"]])
+    for bad in (-5, 0, 24, True, 2.5, "64"):
+        with pytest.raises(InputError, match="snap_bits"):
+            approximate(surface, domain, "1/100", snap_bits=bad)
+    with pytest.raises(LimitError, match="max_input_bits"):
+        approximate(surface, domain, "1/100", snap_bits=10**7)
+
+
+@pytest.mark.parametrize("weights", [[0, 1, 1], [1, -1, 1], [1, 1, "-1/2"], [True, 1, 1], [1, math.nan, 1], [1, 1]])
+def test_non_positive_or_malformed_weights_are_refused(weights):
+    with pytest.raises(InputError):
+        BezierCurve([[0, 0], [1, 1], [2, 0]], weights=weights)
+
+
+def test_zero_weight_is_a_weight_error():
+    with pytest.raises(WeightError):
+        BezierCurve([[0, 0], [1, 1], [2, 0]], weights=[1, 0, 1])
+
+
+def test_huge_integers_evaluate_exactly_and_their_float_companions_are_inf():
+    from exactcagd.numeric import evaluate
+
+    big = 10**5000
+    curve = BezierCurve([[big, 0], [0, 1]])
+    assert curve.evaluate("1/2") == (mpq(big, 2), mpq(1, 2))  # exact: (P0 + P1) / 2
+    values, _ = evaluate(curve, [0.5])
+    assert values[0][0] == math.inf and values[0][1] == 0.5
+
+
+def test_limits_are_reachable_from_the_package():
+    import exactcagd
+
+    assert exactcagd.limits.get("max_degree") == limits.DEFAULTS["max_degree"]
