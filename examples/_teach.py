@@ -24,8 +24,28 @@ STEPS: list[dict] = []
 
 
 def out_path(name: str) -> Path:
+    """Where to save picture ``name``; called as ``fig.savefig(out_path(name))``, so the open
+    figures are finished here: every unlabelled axis gets its coordinate name (x, y, z)."""
     OUT.mkdir(parents=True, exist_ok=True)
+    for number in plt.get_fignums():
+        label_axes(plt.figure(number))
     return OUT / name
+
+
+def label_axes(fig) -> None:
+    """Name the unlabelled axes of the geometric views of ``fig`` (3-D views, and 2-D views drawn
+    with equal aspect): x, y and z (a reader must know which coordinate is up).  Graphs of
+    functions keep their own labels."""
+    for ax in fig.axes:
+        is_3d = hasattr(ax, "get_zlabel")
+        if not is_3d and ax.get_aspect() not in (1, 1.0, "equal"):
+            continue
+        if not ax.get_xlabel():
+            ax.set_xlabel("x")
+        if not ax.get_ylabel():
+            ax.set_ylabel("y")
+        if is_3d and not ax.get_zlabel():
+            ax.set_zlabel("z")
 
 
 def sample(curve, k: int = 300, lo: float = 0.0, hi: float = 1.0) -> np.ndarray:
@@ -47,14 +67,16 @@ def step(title: str) -> None:
     STEPS.append({"title": title, "items": []})
 
 
-def tex(label: str, value) -> None:
-    """Print ``label = value`` and record the value typeset by sympy for the docs page.
+def tex(label: str, value, echo: bool = True) -> None:
+    """Print ``label = value`` (unless ``echo=False``: the script printed it already) and record
+    the value typeset by sympy for the docs page.
 
-    ``value`` is anything sympy understands (expressions, matrices, mpq through ``fmt``).
+    ``value`` is anything sympy understands (expressions, matrices; mpq and nested lists of them).
     """
     import sympy as sp
 
-    print(label, "=", fmt(value))
+    if echo:
+        print(label, "=", fmt(value))
     try:
         latex = sp.latex(sp.sympify(_sympy_ready(value)))
     except (sp.SympifyError, TypeError, AttributeError):
@@ -83,6 +105,7 @@ def _sympy_ready(value):
 def _write_steps() -> None:
     if STEPS and os.environ.get("EXACTCAGD_EXAMPLES_OUT"):
         name = Path(sys.argv[0]).stem
+        Path(OUT).mkdir(parents=True, exist_ok=True)
         (Path(OUT) / f"{name}.steps.json").write_text(json.dumps(STEPS, indent=1))
 
 

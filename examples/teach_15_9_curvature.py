@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
-from _teach import fmt, out_path, plt, polygon, sample, step
+from _teach import fmt, out_path, plt, polygon, sample, step, tex
 from gmpy2 import mpq
 
 from exactcagd import BezierCurve, BezierSurface
@@ -26,6 +26,8 @@ def show_surface(label, res):
     k1, k2 = res.principal()
     print(f"  {label}: K = {fmt(res.gaussian)}, H^2 = {fmt(res.mean_squared)} (sign {res.mean_sign}),"
           f" H ~ {float(res.mean):.6g}, k1, k2 ~ {float(k1):.6g}, {float(k2):.6g}")
+    tex(f"Gaussian curvature K, {label}", res.gaussian, echo=False)
+    tex(f"H^2, {label}", res.mean_squared, echo=False)
 
 
 def main():
@@ -38,6 +40,7 @@ def main():
         k = cv.curve_start_curvature(c)
         print(f"  {name}: k = 1/2 * {w0 * w2}/{w1 * w1} * 1/1 = {fmt(by_hand)};  code: k^2 = {fmt(k.squared)},"
               f" chapter-2 formula: {fmt(ch2_curvature(c, 0))}")
+        tex(f"k^2 at t = 0, {name}", k.squared, echo=False)
 
     step("15.9.1 Corner of a tensor-product patch: the unit-sphere octant as a rational (2,2) patch")
     q, wq = [[1, 0], [1, 1], [0, 1]], [1, 1, 2]

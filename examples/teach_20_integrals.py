@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from _teach import fmt, out_path, plt, polygon, sample, step
+from _teach import fmt, out_path, plt, polygon, sample, step, tex
 from exactcagd import BezierCurve
 from exactcagd.toolbox import integrals as ig
 
@@ -19,7 +19,12 @@ print("  int y dx =", fmt(ig.area_under(c)), " via n sum D_ij y_i x_j =", fmt(ig
 print("  D (n = 3), corrected with 1/C(2n, i+j):")
 for row in ig.d2_coefficients(3):
     print("   ", "  ".join(f"{fmt(v):>7}" for v in row))
+tex("area under the cubic, int y dx", ig.area_under(c), echo=False)
+tex("D (n = 3)", [list(row) for row in ig.d2_coefficients(3)], echo=False)
 ix, iy = ig.first_moments(c)
+tex("I_x", ix, echo=False)
+tex("I_y", iy, echo=False)
+tex("volume of revolution / pi", ig.volume_over_pi(c), echo=False)
 print("  I_x =", fmt(ix), " I_y =", fmt(iy), " volume of revolution = pi *", fmt(ig.volume_over_pi(c)))
 
 semi = BezierCurve([[0, 0], [0, 1], [1, 1], [1, 0]], [1, Fraction(1, 3), Fraction(1, 3), 1])

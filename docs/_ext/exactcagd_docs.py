@@ -89,7 +89,7 @@ def _constraints(node: dict) -> str:
 NOTES = {
     "name": "names the object or product; output files are called after it",
     "float_policy": "`\"reject\"`: a float anywhere is an error; `\"exact\"`: a float is taken at its exact binary value",
-    "surfaces": "surfaces by name", "curves": "curves by name", "products": "what to compute, in order",
+    "top.surfaces": "surfaces by name", "top.curves": "curves by name", "products": "what to compute, in order",
     "control_net": "rows of control points (`net[i][j]`, i along u) or a `grid` generator",
     "control_points": "control points in order; 2-D curves are domain (trim) curves",
     "weights": "positive weights (rational / NURBS); omitted: all 1",
@@ -109,16 +109,17 @@ NOTES = {
 }
 
 
-def _row(name: str, node: dict, required, defs) -> str:
+def _row(name: str, node: dict, required, defs, where: str) -> str:
+    note = node.get("description", "") or NOTES.get(f"{where}.{name}", NOTES.get(name, ""))
     cells = [f"`{name}`", _type_of(node, defs), "yes" if name in required else "",
-             " ".join(x for x in (node.get("description", "") or NOTES.get(name, ""), _constraints(node)) if x)]
+             " ".join(x for x in (note, _constraints(node)) if x)]
     return "| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |"
 
 
-def _table(node: dict, defs: dict) -> list[str]:
+def _table(node: dict, defs: dict, where: str = "") -> list[str]:
     required = set(node.get("required", []))
     lines = ["| key | type | required | notes |", "|---|---|---|---|"]
-    lines += [_row(k, v, required, defs) for k, v in node.get("properties", {}).items()]
+    lines += [_row(k, v, required, defs, where) for k, v in node.get("properties", {}).items()]
     return lines
 
 
@@ -136,7 +137,7 @@ def scene_format_page() -> str:
            "`exactcagd run FILE --out DIR` computes it.  The README's scene:", "",
            "```{literalinclude} ../../examples/scenes/hill_trim.toml", ":language: toml", "```", "",
            "## Top level", ""]
-    out += _table(schema, defs) + [""]
+    out += _table(schema, defs, "top") + [""]
     for name, node in schema.get("properties", {}).items():
         if "properties" in node:
             out += [f"### `[{name}]`", ""] + _table(node, defs) + [""]
@@ -187,7 +188,7 @@ def _run_example(entry, folder: Path) -> tuple[str, float, int]:
     argv = [a.replace("{out}", str(out)).replace("{exactcagd}", exe) for a in argv]
     env = dict(os.environ, EXACTCAGD_EXAMPLES_OUT=str(out), MPLBACKEND="Agg", PYTHONHASHSEED="0")
     start = time.perf_counter()
-    proc = subprocess.run(argv, cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
+    proc = subprocess.run(argv, cwd=ROOT, env=env, capture_output=True, text=True, timeout=900, check=False)
     (out / "stdout.txt").write_text(proc.stdout)
     (out / "stderr.txt").write_text(proc.stderr)
     return key, time.perf_counter() - start, proc.returncode

@@ -231,6 +231,12 @@ class SplineComposition:
             "joints": [j.to_dict() for j in self.joints],
         }
 
+    def plot(self, ax=None, **style):
+        """Draw the exact image curve, all pieces one legend entry (matplotlib; :func:`exactcagd.plotting.plot`)."""
+        from ..plotting import plot
+
+        return plot(self, ax=ax, **style)
+
 
 # ----------------------------------------------------------------------------- splitting
 @dataclass

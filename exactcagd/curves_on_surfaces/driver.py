@@ -149,6 +149,12 @@ class CurveOnSurface:
             "timings": dict(self.timings),
         }
 
+    def plot(self, ax=None, **style):
+        """Draw the approximation, all segments one legend entry with the bound (matplotlib; see :func:`exactcagd.plotting.plot`)."""
+        from ..plotting import plot
+
+        return plot(self, ax=ax, **style)
+
     def __repr__(self) -> str:
         return (
             f"<CurveOnSurface method={self.method} segments={len(self.segments)} degree={self.degree} "

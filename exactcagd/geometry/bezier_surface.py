@@ -22,7 +22,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DimensionError, DomainError, InputError
 from ..exact import bernstein as bz
-from ..exact.scalars import rational_str, to_count, to_rational, to_sympy
+from ..exact.scalars import rational_str, short_repr, to_count, to_rational, to_sympy
 from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, unit_parameter, weight_array
 from .bezier_curve import BezierCurve
 
@@ -281,8 +281,23 @@ class BezierSurface:
         return surface
 
     def __repr__(self) -> str:
+        from ._display import points_preview
+
         kind = "rational " if self.is_rational else ""
-        return f"<{kind}BezierSurface degree={self.degree} dimension={self.dimension}>"
+        first_row = points_preview(self.control_net[0])
+        return f"<{kind}BezierSurface degree={self.degree} dimension={self.dimension} net[0]={first_row}>"
+
+    def _repr_latex_(self) -> str:
+        """Jupyter shows the patch typeset: ``S(u, v) =`` its sympy form."""
+        from ._display import latex
+
+        return latex(self, "S(u, v)")
+
+    def plot(self, ax=None, **style):
+        """Draw the patch as a wireframe in 3-D (matplotlib; see :func:`exactcagd.plotting.plot`)."""
+        from ._display import plot
+
+        return plot(self, ax=ax, **style)
 
 
 def _cross(a, b) -> tuple:
@@ -292,5 +307,5 @@ def _cross(a, b) -> tuple:
 def _range(pair, name: str) -> tuple:
     """``(a, b)`` as two exact numbers; anything else is an :class:`InputError` naming ``name``."""
     if isinstance(pair, (str, bytes, bytearray)) or not hasattr(pair, "__len__") or len(pair) != 2:
-        raise InputError(f"{name}: expected a pair (a, b) of numbers, got {str(pair)[:40]!r}")
+        raise InputError(f"{name}: expected a pair (a, b) of numbers, got {short_repr(pair, 40)}")
     return to_rational(pair[0], where=f"{name}[0]"), to_rational(pair[1], where=f"{name}[1]")

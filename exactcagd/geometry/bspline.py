@@ -56,7 +56,23 @@ def _project(hom: np.ndarray, rational: bool) -> tuple:
     return tuple(x / hom[-1] for x in hom[:-1])
 
 
-class BSplineCurve:
+class _ByValue:
+    """Equality and hashing by the stored representation (``_key()``: degrees, knots, points,
+    weights), exactly; so a pickle or ``to_dict``/``from_dict`` round trip compares equal."""
+
+    def _key(self) -> tuple:
+        raise NotImplementedError
+
+    def __eq__(self, other) -> bool:
+        if type(other) is not type(self):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self):
+        return hash(self._key())
+
+
+class BSplineCurve(_ByValue):
     """A clamped B-spline (NURBS with ``weights``) curve with exact data.
 
     Parameters
@@ -180,11 +196,23 @@ class BSplineCurve:
         return cls(data["control_points"], data["knots"], data.get("weights"), degree=data.get("degree"))
 
     def __repr__(self) -> str:
+        from ._display import points_preview
+
         kind = "NURBS" if self.is_rational else "BSpline"
-        return f"<{kind}Curve degree={self.degree} points={len(self._points)} dimension={self.dimension}>"
+        return (f"<{kind}Curve degree={self.degree} points={len(self._points)} dimension={self.dimension} "
+                f"control_points={points_preview(self.control_points)}>")
+
+    def _key(self) -> tuple:
+        return (self.degree, self.knots, self.control_points, self.weights)
+
+    def plot(self, ax=None, **style):
+        """Draw the curve, its control polygon and its knots (matplotlib; :func:`exactcagd.plotting.plot`)."""
+        from ._display import plot
+
+        return plot(self, ax=ax, **style)
 
 
-class BSplineSurface:
+class BSplineSurface(_ByValue):
     """A clamped tensor-product B-spline (NURBS with ``weights``) surface, exact.
 
     Parameters
@@ -363,5 +391,17 @@ class BSplineSurface:
         return surface
 
     def __repr__(self) -> str:
+        from ._display import points_preview
+
         kind = "NURBS" if self.is_rational else "BSpline"
-        return f"<{kind}Surface degree={self.degree} shape={self.shape} dimension={self.dimension}>"
+        return (f"<{kind}Surface degree={self.degree} shape={self.shape} dimension={self.dimension} "
+                f"net[0]={points_preview(self.control_net[0])}>")
+
+    def _key(self) -> tuple:
+        return (self.degree, self.knots_u, self.knots_v, self.control_net, self.weights)
+
+    def plot(self, ax=None, **style):
+        """Draw the surface as a wireframe in 3-D (matplotlib; see :func:`exactcagd.plotting.plot`)."""
+        from ._display import plot
+
+        return plot(self, ax=ax, **style)

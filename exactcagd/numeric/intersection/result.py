@@ -92,6 +92,12 @@ class IntersectionResult(list):
             raise OverlapError(f"the curves share an arc ({arcs}): infinitely many intersection points")
         return list(self)
 
+    def plot(self, ax=None, **style):
+        """Draw the intersection points, numbered (matplotlib; see :func:`exactcagd.plotting.plot`)."""
+        from ...plotting import plot
+
+        return plot(self, ax=ax, **style)
+
     def __repr__(self) -> str:
         extra = f", overlaps={self.overlaps!r}" if self.overlaps else ""
         return f"IntersectionResult({list.__repr__(self)}{extra})"
