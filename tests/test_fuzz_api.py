@@ -327,6 +327,59 @@ def _entries() -> dict:
     E["toolbox.curve_curvature"] = (lambda c, t: toolbox("curvature", "curve_curvature", c, t), args(any_curve, param))
     E["toolbox.periodic_bspline"] = (lambda p, d: toolbox("bspline_extras", "periodic_bspline", p, d), args(_points(), count))
     E["toolbox.gram_matrix"] = (lambda k, d: toolbox("fitting", "gram_matrix", k, d), args(knots, count))
+
+    # more of the algebra, reparametrization and numeric API
+    def algebra(name, *a, **k):
+        import exactcagd.algebra as alg
+
+        return getattr(alg, name)(*a, **k)
+
+    point = st.one_of(st.tuples(scalar, scalar), st.sampled_from(BAD))
+    E["sylvester_matrix"] = (lambda a, b: algebra("sylvester_matrix", a, b), args(coefficients, coefficients))
+    E["bezout_matrix"] = (lambda a, b: algebra("bezout_matrix", a, b), args(coefficients, coefficients))
+    E["discriminant"] = (lambda f, v: algebra("discriminant", f, v), args(poly, st.one_of(st.sampled_from([x, y]), st.sampled_from(BAD))))
+    E["euclid_steps"] = (lambda f, g: algebra("euclid_steps", f, g), args(poly, poly))
+    E["singular_points"] = (lambda f: algebra("singular_points", f), args(poly))
+    E["genus"] = (lambda f: algebra("genus", f), args(poly))
+    E["conic_through_points"] = (lambda ps: algebra("conic_through_points", ps), args(st.one_of(st.lists(point, min_size=0, max_size=6), st.sampled_from(BAD))))
+    E["circle_through_points"] = (lambda a, b, c: algebra("circle_through_points", a, b, c), args(point, point, point))
+    E["mu_basis"] = (lambda c: algebra("mu_basis", c), args(plane_curve))
+    E["double_points"] = (lambda c: algebra("double_points", c), args(plane_curve))
+    E["implicit_equation"] = (lambda c, s: algebra("implicit_equation", c, strict=s), args(plane_curve, flag))
+    E["intersection_polynomial"] = (lambda a, b: algebra("intersection_polynomial", a, b), args(plane_curve, plane_curve))
+    E["implicitize_surface"] = (
+        lambda s, m: algebra("implicitize_surface", __import__("exactcagd.algebra", fromlist=["x"]).SurfaceParametrization.from_bezier_surface(s), m),
+        args(st.one_of(ref("saddle", "biquad", "rational_surface"), st.sampled_from(BAD)), method("linear_algebra", "resultant", "groebner")),
+    )
+    E["eliminate"] = (lambda ps, e, k: algebra("eliminate", ps, e, k), args(st.one_of(st.lists(poly, min_size=1, max_size=2), st.sampled_from(BAD)), st.one_of(st.just([x]), st.sampled_from(BAD)), st.one_of(st.just([y]), st.sampled_from(BAD))))
+    E["normal_form"] = (lambda f, b, g: algebra("normal_form", f, b, g), args(poly, st.one_of(st.lists(poly, max_size=2), st.sampled_from(BAD)), st.one_of(st.just([x, y]), st.sampled_from(BAD))))
+    E["common_points"] = (lambda ps, g: algebra("common_points", ps, g), args(st.one_of(st.lists(poly, min_size=1, max_size=2), st.sampled_from(BAD)), st.one_of(st.just([x, y]), st.none(), st.sampled_from(BAD))))
+
+    def reparam(name, *a):
+        import exactcagd.reparam as rp
+
+        return getattr(rp, name)(*a)
+
+    pair = st.one_of(st.tuples(param, param), st.sampled_from(BAD))
+    E["reparam.quadratic"] = (lambda s, a, b: reparam("quadratic", s, a, b), args(surface, pair, pair))
+    E["reparam.cubic"] = (lambda s, a, b: reparam("cubic", s, a, b), args(surface, st.one_of(st.tuples(param, param, param), st.sampled_from(BAD)), st.one_of(st.tuples(param, param, param), st.sampled_from(BAD))))
+
+    def numeric_evaluate_surface(s, us, vs):
+        from exactcagd.numeric import evaluate_surface as f
+
+        return f(s, us, vs)
+
+    params = st.one_of(st.lists(param, max_size=3), st.sampled_from(BAD))
+    E["numeric.evaluate_surface"] = (numeric_evaluate_surface, args(surface, params, params))
+
+    def compose_homogeneous(s, c):
+        from exactcagd.composition import compose_homogeneous as f
+
+        return f(s, c)
+
+    E["compose_homogeneous"] = (compose_homogeneous, args(surface, domain))
+    E["BezierCurve.from_homogeneous"] = (lambda h: __import__("exactcagd").BezierCurve.from_homogeneous(h), args(_points(3)))
+    E["BezierCurve.to_sympy"] = (lambda c, t: c.to_sympy(t), args(ref("line", "arc", "space_curve"), st.one_of(st.none(), st.just(sympy.Symbol("s")), st.sampled_from(BAD))))
     return E
 
 
@@ -407,7 +460,10 @@ class Worker:
 
 
 def _show(args, kwargs) -> str:
-    text = repr(args) + (repr(kwargs) if kwargs else "")
+    try:
+        text = repr(args) + (repr(kwargs) if kwargs else "")
+    except ValueError:  # repr of a 10^5000 int exceeds Python's 4300-digit limit
+        text = "(arguments with huge integers)"
     return text if len(text) < 300 else text[:280] + "..."
 
 

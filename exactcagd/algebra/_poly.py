@@ -27,7 +27,7 @@ from gmpy2 import mpq
 from .. import limits
 from ..errors import DegreeError, DimensionError, InputError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import from_fmpq, to_fmpq
+from ..exact.scalars import from_fmpq, short_repr, to_fmpq
 
 __all__ = [
     "X_SYM",
@@ -67,11 +67,11 @@ def polynomial_input(value, name: str):
         limits.check("max_degree", value.total_degree(), f"{name}: total degree")
         return value
     if isinstance(value, (bool, str, bytes, bytearray)) or not isinstance(value, (sympy.Basic, int, Fraction, type(mpq(0)))):
-        raise InputError(f"{name}: expected a sympy expression or Poly, got {type(value).__name__} {str(value)[:40]!r}")
+        raise InputError(f"{name}: expected a sympy expression or Poly, got {type(value).__name__} {short_repr(value, 40)}")
     if not isinstance(value, sympy.Basic):
         value = sympy.Rational(int(value.numerator), int(value.denominator))
     if not isinstance(value, sympy.Expr) or value.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan) or not value.is_polynomial():
-        raise InputError(f"{name}: {str(value)[:60]} is not a polynomial")
+        raise InputError(f"{name}: {short_repr(value, 60)} is not a polynomial")
     for power in value.atoms(sympy.Pow):  # x**(10**6) is checked before any expansion
         if power.exp.is_Integer:
             limits.check("max_degree", int(power.exp), f"{name}: exponent of {str(power.base)[:30]}")
@@ -81,7 +81,7 @@ def polynomial_input(value, name: str):
 def symbol_input(value, name: str) -> sympy.Symbol:
     """A sympy ``Symbol`` (a variable to eliminate or a generator), else :class:`InputError`."""
     if not isinstance(value, sympy.Symbol):
-        raise InputError(f"{name}: expected a sympy Symbol, got {type(value).__name__} {str(value)[:40]!r}")
+        raise InputError(f"{name}: expected a sympy Symbol, got {type(value).__name__} {short_repr(value, 40)}")
     return value
 
 
@@ -229,7 +229,7 @@ def sympy_to_mpoly(expr, gens, ctx=None):
         try:
             poly = poly.set_domain("QQ")  # raises for non-rational coefficients
         except sympy.polys.polyerrors.BasePolynomialError:
-            raise InputError(f"{str(expr)[:60]}: coefficients must be rational numbers in {tuple(gens)}, got domain {poly.domain}") from None
+            raise InputError(f"{short_repr(expr, 60)}: coefficients must be rational numbers in {tuple(gens)}, got domain {poly.domain}") from None
     items = [(m, sympy.Rational(c)) for m, c in poly.terms()]
     den = 1
     for _, c in items:

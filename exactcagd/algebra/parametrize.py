@@ -19,7 +19,7 @@ from __future__ import annotations
 import sympy
 
 from ..errors import InputError, NotSupportedError
-from ..exact.scalars import to_rational, to_sympy
+from ..exact.scalars import short_repr, to_rational, to_sympy
 from ._poly import T_SYM, X_SYM, Y_SYM
 
 __all__ = [
@@ -163,7 +163,7 @@ def circle_through_points(p1, p2, p3):
     rows, rhs = [], []
     for k, p in enumerate((p1, p2, p3)):
         if isinstance(p, (str, bytes, bytearray)) or not hasattr(p, "__len__") or len(p) != 2:
-            raise InputError(f"p{k + 1}: expected a point (x, y), got {str(p)[:40]!r}")
+            raise InputError(f"p{k + 1}: expected a point (x, y), got {short_repr(p, 40)}")
         px, py = (to_sympy(to_rational(v, where=f"p{k + 1}")) for v in p)
         rows.append([px, py, 1])
         rhs.append(px**2 + py**2)

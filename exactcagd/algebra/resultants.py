@@ -32,7 +32,7 @@ from gmpy2 import mpq
 
 from .. import limits
 from ..errors import InputError
-from ..exact.scalars import to_rational
+from ..exact.scalars import short_repr, to_rational
 from ._poly import mpoly_to_sympy, polynomial_input, symbol_input, zctx
 
 __all__ = [
@@ -137,7 +137,7 @@ def echelon_bareiss(matrix) -> tuple[list[list], int]:
 # ---------------------------------------------------------------------------- matrices
 def _trim(a: list) -> list:
     if isinstance(a, (str, bytes, bytearray)) or not hasattr(a, "__len__") or len(a) == 0:
-        raise InputError(f"expected a non-empty list of coefficients, got {str(a)[:40]!r}")
+        raise InputError(f"expected a non-empty list of coefficients, got {short_repr(a, 40)}")
     limits.check("max_degree", len(a) - 1, "coefficient list: degree")
     a = list(a)
     while len(a) > 1 and a[-1] == 0:
@@ -410,7 +410,7 @@ def _univariate(f, var=None) -> tuple[list[mpq], sympy.Symbol]:
     try:
         p = sympy.Poly(e, var, domain="QQ")
     except sympy.polys.polyerrors.BasePolynomialError:
-        raise InputError(f"{str(e)[:60]}: expected a univariate polynomial in {var} with rational coefficients") from None
+        raise InputError(f"{short_repr(e, 60)}: expected a univariate polynomial in {var} with rational coefficients") from None
     return [mpq(int(c.p), int(c.q)) for c in p.all_coeffs()[::-1]], var
 
 

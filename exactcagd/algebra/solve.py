@@ -32,6 +32,7 @@ import flint
 from .. import limits
 from ..errors import InputError, NotSupportedError
 from ..exact.algebraic import real_roots
+from ..exact.scalars import short_repr
 from ._poly import X_SYM, XY, Y_SYM, polynomial_input, symbol_input, sympy_to_mpoly, zctx
 from .numberfield import NumberField, algebraic_value
 
@@ -109,7 +110,7 @@ def solve_bivariate(polys, gens=None, max_shear: int = 40) -> list[Orbit]:
     if not isinstance(polys, (list, tuple)):
         raise InputError(f"polys: expected a list of polynomials, got {type(polys).__name__}")
     if gens is not None and (not isinstance(gens, (list, tuple)) or len(gens) != 2):
-        raise InputError(f"gens: expected two sympy Symbols, got {str(gens)[:40]!r}")
+        raise InputError(f"gens: expected two sympy Symbols, got {short_repr(gens, 40)}")
     gens = None if gens is None else tuple(symbol_input(g, "gens") for g in gens)
     P = [to_xy_mpoly(p, gens) for p in polys]
     for k, p in enumerate(P):  # Bezout: up to deg(p) deg(q) solutions, each an algebraic number of that degree

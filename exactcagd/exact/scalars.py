@@ -51,6 +51,7 @@ __all__ = [
     "to_float",
     "to_count",
     "to_tolerance",
+    "short_repr",
 ]
 
 #: The exact scalar type used throughout the exact layer.
@@ -150,7 +151,7 @@ def to_rational(x, *, policy: str | None = None, where: str = "value") -> Ration
     if isinstance(x, bool):
         raise InputError(f"{where}: booleans are not numbers here ({x!r})")
     if isinstance(x, (bytes, bytearray, memoryview)):
-        raise InputError(f"{where}: bytes are not numbers here ({x!r}); give an int, a Fraction or a str")
+        raise InputError(f"{where}: bytes are not numbers here ({short_repr(x)}); give an int, a Fraction or a str")
     if isinstance(x, (int, type(mpz(0)))):
         _check_bits(x, 1, where)
         return mpq(x)
@@ -187,7 +188,7 @@ def to_rational(x, *, policy: str | None = None, where: str = "value") -> Ration
         return _from_flint(x, where)
     if isinstance(x, numbers.Rational):
         return mpq(int(x.numerator), int(x.denominator))
-    raise InputError(f"{where}: cannot convert {x!r} of type {type(x).__name__} to an exact rational")
+    raise InputError(f"{where}: cannot convert {short_repr(x)} of type {type(x).__name__} to an exact rational")
 
 
 _INTEGER = re.compile(r"\s*([+-]?)([0-9](?:_?[0-9])*)\s*")
@@ -207,14 +208,14 @@ def _from_string(s: str, where: str) -> Rational:
     if slash:
         num, den = _INTEGER.fullmatch(num_text), _INTEGER.fullmatch(den_text)
         if num is None or den is None:
-            raise InputError(f"{where}: cannot parse {_short_repr(s)} as an exact rational")
+            raise InputError(f"{where}: cannot parse {short_repr(s)} as an exact rational")
         denominator = _digits(den)
         if denominator == 0:
-            raise InputError(f"{where}: {_short_repr(s)} has a zero denominator")
+            raise InputError(f"{where}: {short_repr(s)} has a zero denominator")
         return mpq(_digits(num), denominator)
     match = _DECIMAL.fullmatch(text)
     if match is None:
-        raise InputError(f"{where}: cannot parse {_short_repr(s)} as an exact rational")
+        raise InputError(f"{where}: cannot parse {short_repr(s)} as an exact rational")
     sign, whole, fraction, exponent = match.groups()
     fraction = (fraction or "").replace("_", "")
     mantissa = mpz((whole or "0").replace("_", "") + fraction)
@@ -264,8 +265,8 @@ def _from_sympy(x, policy: str, where: str) -> Rational:
         simplified = sympy.simplify(x)
         if simplified.is_Rational:
             return mpq(int(simplified.p), int(simplified.q))
-        raise InexactInputError(f"{where}: {x} is not rational; exact rationals only")
-    raise InputError(f"{where}: sympy object {x!r} is not a number")
+        raise InexactInputError(f"{where}: {short_repr(x)} is not rational; exact rationals only")
+    raise InputError(f"{where}: sympy object {short_repr(x)} is not a number")
 
 
 def _exact_mpf(x, policy: str, where: str) -> Rational:
@@ -285,7 +286,7 @@ def _from_flint(x, where: str) -> Rational:
         return mpq(int(x))
     if isinstance(x, flint.fmpq):
         return mpq(int(x.p), int(x.q))
-    raise InputError(f"{where}: cannot convert flint object {x!r} to an exact rational")
+    raise InputError(f"{where}: cannot convert flint object {short_repr(x)} to an exact rational")
 
 
 def to_rational_array(values, *, policy: str | None = None, where: str = "array"):
@@ -342,12 +343,22 @@ def to_count(x, *, where: str = "count", error: type = InputError) -> int:
     3
     """
     if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < 0:
-        raise error(f"{where} must be a non-negative integer, got {_short_repr(x)}")
+        raise error(f"{where} must be a non-negative integer, got {short_repr(x)}")
     return int(x)
 
 
-def _short_repr(x, limit: int = 80) -> str:
-    """``repr(x)`` cut to ``limit`` characters (a 10^5000 argument must not flood a message)."""
+def short_repr(x, limit: int = 80) -> str:
+    """``repr(x)`` cut to ``limit`` characters, for error messages about user values.
+
+    A 10^5000 argument must neither flood the message nor break it: ``repr`` of an int
+    above 4300 digits raises ``ValueError`` in Python >= 3.11 (such ints are described by
+    their size instead).
+
+    >>> short_repr(10**5000)
+    '<int of 16610 bits>'
+    """
+    if isinstance(x, int) and not isinstance(x, bool) and x.bit_length() > 4000:
+        return f"<int of {x.bit_length()} bits>"
     try:
         text = repr(x)
     except Exception:  # noqa: BLE001 - a broken __repr__ must not hide the real error
@@ -398,10 +409,10 @@ def to_tolerance(value, name: str = "tol") -> float:
         try:
             tol = to_float(to_rational(value, policy="exact", where=name))
         except InputError as exc:
-            raise InputError(f"{name} must be a positive finite number, got {_short_repr(value)} ({exc})") from None
+            raise InputError(f"{name} must be a positive finite number, got {short_repr(value)} ({exc})") from None
     if not (tol > 0 and math.isfinite(tol)):
         raise InputError(
-            f"{name} must be a positive finite number, got {_short_repr(value)}"
+            f"{name} must be a positive finite number, got {short_repr(value)}"
             + (" (its nearest float is 0.0)" if tol == 0 and not isinstance(value, float) and value != 0 else "")
         )
     return tol

@@ -33,7 +33,7 @@ import numpy as np
 from gmpy2 import mpq
 
 from ..errors import DomainError, InputError
-from ..exact.scalars import to_rational
+from ..exact.scalars import short_repr, to_rational
 from ..geometry.bezier_surface import BezierSurface
 from ._mechanism import bernstein_of_map, substitute_curve, substitute_tensor
 
@@ -44,7 +44,7 @@ def _coefficients(values, count: int, name: str) -> list:
     try:
         values = list(values)
     except TypeError:
-        raise InputError(f"{name}: expected {count} coefficients, got {values!r}") from None
+        raise InputError(f"{name}: expected {count} coefficients, got {short_repr(values)}") from None
     if len(values) != count:
         raise InputError(f"{name}: expected {count} coefficients, got {len(values)}")
     out = [to_rational(x, where=f"{name}[{k}]") for k, x in enumerate(values)]
