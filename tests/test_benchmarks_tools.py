@@ -26,9 +26,7 @@ def test_call_main_both_conventions():
 
 
 def test_write_runs_merges_within_a_mode(tmp_path, monkeypatch):
-    import benchmarks.__main__ as runner
-
-    monkeypatch.setattr(runner, "RESULTS", tmp_path)
+    monkeypatch.setattr(common, "RESULTS", tmp_path)  # the runner reads the one results root there (bench --out sets it)
     write_runs([["bench_a", "quick", "t", "ok", "1.0", "1 MB"], ["bench_b", "quick", "t", "ok", "2.0", "1 MB"]], True)
     write_runs([["bench_b", "quick", "t2", "FAILED: x", "3.0", "2 MB"]], True)
     text = (tmp_path / "RUNS.md").read_text()
