@@ -37,10 +37,14 @@ def _figure(error_panel: bool = False):
     import matplotlib.pyplot as plt
 
     columns = 3 if error_panel else 2
-    fig = plt.figure(figsize=(6 * columns, 6.5), layout="constrained")  # makes room for the legends
-    axes = [fig.add_subplot(1, columns, 1), fig.add_subplot(1, columns, 2, projection="3d")]
+    fig = plt.figure(figsize=(6 * columns, 7.3), layout="constrained")
+    # a row of its own under the panels for the legends, so no legend is cut off or covers data
+    grid = fig.add_gridspec(2, columns, height_ratios=[6.0, 0.9])
+    axes = [fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1], projection="3d")]
     if error_panel:
-        axes.append(fig.add_subplot(1, columns, 3))
+        axes.append(fig.add_subplot(grid[0, 2]))
+    for column in range(columns):  # legend holders, after the panels in fig.axes
+        fig.add_subplot(grid[1, column]).axis("off")
     return fig, axes
 
 
@@ -228,6 +232,9 @@ def _finish_error_panel(axe) -> None:
     axe.set_xlabel("parameter t of the domain curve")
     axe.set_ylabel("distance to the exact image S(D(t))")
     axe.set_title("approximation error (true distance, log scale)")
+    lines = [line.get_ydata() for line in axe.get_lines()]
+    top = max(float(np.max(y)) for y in lines if len(y))
+    axe.set_ylim(ERROR_FLOOR / 10, top * 10)  # the bound and tolerance lines inside, not on the frame
 
 
 class _Colours:
@@ -248,6 +255,7 @@ def _label_axes(ax2, ax3) -> None:
     ax3.set_xlabel("x")
     ax3.set_ylabel("y")
     ax3.set_zlabel("z")
+    ax3.set_box_aspect(None, zoom=0.88)  # room for the z label, which matplotlib clips otherwise
 
 
 def draw(product: dict, objects: dict, results: dict, specs: dict | None = None):
@@ -309,7 +317,9 @@ def draw(product: dict, objects: dict, results: dict, specs: dict | None = None)
         _finish_error_panel(axes[2])
     _label_axes(ax2, ax3)
     ax2.set_aspect("equal", adjustable="box")
-    for ax in axes:  # legends below the panels, where they cover nothing
-        if ax.get_legend_handles_labels()[0]:
-            ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize=7, ncol=2, frameon=False)
+    holders = fig.axes[len(axes):len(axes) * 2]
+    for ax, holder in zip(axes, holders):  # each panel's legend in the row below it
+        handles, labels = ax.get_legend_handles_labels()
+        if handles:
+            holder.legend(handles, labels, loc="upper center", fontsize=7.5, ncol=2, frameon=False)
     return fig
