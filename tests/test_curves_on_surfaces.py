@@ -435,3 +435,28 @@ def test_exact_joint_data_without_rounding():
     dc = DomainCurve(D)
     pts = {dc.point(0, mpq(k, 64)) for k in range(65)}
     assert any(seg.evaluate(0) in pts for seg in r.domain_segments[1:])
+
+
+# ----------------------------------------------------------------------------- ball certificates (issue 18)
+@pytest.mark.parametrize("weights", [None, [1, 3, 1]])
+def test_hausdorff_certificate_catches_a_planted_violation(weights):
+    """A: the segment (0, 0)-(1, 0) as a (rational) quadratic; B: the same shifted by
+    delta = 3/1000 in y.  H(A, B) = delta exactly (reference: the construction).  A limit
+    2^-50 below delta must not be certified (the claim H <= limit would be false); a limit
+    2^-20 above must be, with a bound in [delta, limit] (the pieces are paired by float foot
+    points, which costs ~1e-10 relative here: 2^-50 above delta is out of the method's reach)."""
+    from exactcagd.composition import ball
+    from exactcagd.curves_on_surfaces.hausdorff import _ball_rows, ball_piece_bound
+
+    delta = mpq(3, 1000)
+    a = BezierCurve([[0, 0], ["1/2", 0], [1, 0]], weights).homogeneous()
+    b = BezierCurve([[0, delta], ["1/3", delta], [1, delta]]).homogeneous()
+    assert hausdorff_bound(a, b, delta * (1 - mpq(1, 2**50))) is None
+    stats: dict = {}
+    bound = hausdorff_bound(a, b, delta * (1 + mpq(1, 2**20)), stats=stats)
+    assert bound is not None and delta <= bound <= delta * (1 + mpq(1, 2**20))
+    assert stats.get(ball.BALL, 0) >= 1  # the ball route decided (speed, not the proof)
+    with ball.precision():
+        quick = ball_piece_bound(_ball_rows(a), _ball_rows(b))
+    # both bound the same formula; a zero fat-line width costs the ball sqrt(radius) ~ 1e-17 relative
+    assert delta <= quick <= piece_bound(a, b) * (1 + mpq(1, 2**40))

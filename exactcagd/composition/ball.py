@@ -141,7 +141,7 @@ def max_norm_upper(rows: list) -> flint.arb:
         sq = sum((x * x for x in row), flint.arb(0))
         # max of balls: a ball containing the exact maximum (Arb's arb_max)
         best = sq if best is None else best.max(sq)
-    return best.sqrt()
+    return best.nonnegative_part().sqrt()  # a sum of squares: its ball may reach below 0
 
 
 def _reverse(p: flint.arb_poly, n: int) -> flint.arb_poly:

@@ -132,7 +132,8 @@ def _hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
 
 
 def _ball_hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
-    """:func:`_hull_bound` in ball arithmetic: a rational bound, ``None`` when undecided.
+    """:func:`_hull_bound` in ball arithmetic: a rational bound, ``None`` when undecided
+    (weights not all positive, or a ball reaching 0 where the exact bound may be 0).
 
     The same convex-hull formula evaluated on ``arb`` balls that contain the exact
     coefficients (:mod:`exactcagd.composition.ball`); the upper end of the resulting ball
@@ -147,6 +148,8 @@ def _ball_hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
             if low <= 0:
                 return None
             value = value / ball.to_arb(low)
+        if not value > 0:
+            return None  # F = C may hold exactly: the exact route then proves the bound 0
         return ball.upper_rational(value)
 
 
@@ -168,12 +171,13 @@ def certify(hom: np.ndarray, ctrl: np.ndarray, target=None) -> tuple[mpq, str]:
         bound = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), stats=stats)
         return bound, (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
     hull = _ball_hull_bound(hom, ctrl)
-    if hull is not None and hull <= target:
+    if hull is None:
+        return certified_bound(hom, ctrl, target), ball.EXACT
+    if hull <= target:
         return hull, ball.BALL
     stats = {}
     refined = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), target=target, stats=stats)
-    bound = refined if hull is None else min(hull, refined)
-    return bound, (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
+    return min(hull, refined), (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
 
 
 def certified_bound(hom: np.ndarray, ctrl: np.ndarray, target=None) -> mpq:

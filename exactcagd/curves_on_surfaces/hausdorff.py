@@ -257,7 +257,9 @@ def ball_piece_bound(rows_a: list, rows_b: list) -> mpq | None:
 
     The same formula on balls containing the exact control points (python-flint ``arb``,
     :mod:`exactcagd.composition.ball`): the upper end of the result bounds the exact
-    :func:`piece_bound`, hence ``H(A, B)``.
+    :func:`piece_bound`, hence ``H(A, B)``.  ``None`` also when the ball reaches 0: a square
+    root of a ball around 0 costs ``sqrt(radius)``, and an exact zero bound (an iso-curve,
+    reproduced exactly) should stay 0.
     """
     pa, pb = _ball_points(rows_a), _ball_points(rows_b)
     best = flint.arb(0)
@@ -266,7 +268,10 @@ def ball_piece_bound(rows_a: list, rows_b: list) -> mpq | None:
         if parts is None:
             return None
         a_part, delta = parts
-        best = best.max(a_part.max(flint.arb(0)).sqrt() + delta.max(flint.arb(0)).sqrt())
+        # squared distances are >= 0: their balls may reach below 0, sqrt takes the part >= 0
+        best = best.max(a_part.nonnegative_part().sqrt() + delta.nonnegative_part().sqrt())
+    if not best > 0:
+        return None  # the exact bound may be 0 (e.g. an exact iso-curve): exact rationals give it exactly
     return ball.upper_rational(best)
 
 
