@@ -253,3 +253,11 @@ def test_limits_are_reachable_from_the_package():
     import exactcagd
 
     assert exactcagd.limits.get("max_degree") == limits.DEFAULTS["max_degree"]
+
+
+def test_float_companions_of_huge_control_points_follow_the_inf_rule():
+    big = 10**5000
+    points, weights = BezierCurve([[big, 0], [1, "1/3"]], weights=[1, big]).to_float()
+    assert points[0][0] == math.inf and points[1][1] == 1 / 3 and weights[1] == math.inf
+    net, _ = BezierSurface([[[-big, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]).to_float()
+    assert net[0][0][0] == -math.inf and net[1][1][2] == 1.0

@@ -21,7 +21,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DomainError, InputError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import from_fmpq, rational_str, to_count, to_fmpq, to_rational, to_sympy
+from ..exact.scalars import from_fmpq, rational_str, to_count, to_float, to_fmpq, to_rational, to_sympy
 from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, unit_parameter, weight_array
 
 __all__ = ["BezierCurve"]
@@ -309,9 +309,13 @@ class BezierCurve:
         return sympy.Matrix([sympy.expand(c) / sympy.expand(w) for c in comps[:-1]])
 
     def to_float(self) -> tuple[np.ndarray, np.ndarray | None]:
-        """Control points (and weights) rounded to float64 (for plotting and numerics)."""
-        pts = np.array([[float(x) for x in p] for p in self._points])
-        w = None if self._weights is None else np.array([float(x) for x in self._weights])
+        """Control points (and weights) rounded to float64 (for plotting and numerics).
+
+        Correctly rounded; magnitudes beyond the float range become ``inf`` (the rule of
+        :func:`exactcagd.exact.scalars.to_float`).
+        """
+        pts = np.array([[to_float(x) for x in p] for p in self._points], dtype=float)
+        w = None if self._weights is None else np.array([to_float(x) for x in self._weights], dtype=float)
         return pts, w
 
     def to_dict(self) -> dict:

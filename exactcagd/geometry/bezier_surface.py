@@ -22,7 +22,7 @@ from gmpy2 import mpq
 
 from ..errors import DegreeError, DimensionError, DomainError, InputError
 from ..exact import bernstein as bz
-from ..exact.scalars import rational_str, short_repr, to_count, to_rational, to_sympy
+from ..exact.scalars import rational_str, short_repr, to_count, to_float, to_rational, to_sympy
 from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, unit_parameter, weight_array
 from .bezier_curve import BezierCurve
 
@@ -256,9 +256,9 @@ class BezierSurface:
         return sympy.Matrix([c / comps[-1] for c in comps[:-1]])
 
     def to_float(self) -> tuple[np.ndarray, np.ndarray | None]:
-        """Net (and weights) rounded to float64."""
-        net = np.vectorize(float, otypes=[float])(self._net)
-        w = None if self._weights is None else np.vectorize(float, otypes=[float])(self._weights)
+        """Net (and weights) rounded to float64 (correctly; beyond the float range: ``inf``)."""
+        net = np.vectorize(to_float, otypes=[float])(self._net)
+        w = None if self._weights is None else np.vectorize(to_float, otypes=[float])(self._weights)
         return net, w
 
     def to_dict(self) -> dict:
