@@ -189,6 +189,8 @@ def loglog_plot(filename: str, series: dict, xlabel: str, ylabel: str, title: st
         xs = [x for x, _ in points]
         ys = [max(y, floor) for _, y in points]
         ax.plot(xs, ys, marker="o", linestyle="-" if lines else "none", label=label, markersize=4)
+    if any(y <= floor for points in series.values() for _, y in points):  # say what the floor means
+        ax.axhline(floor, color="0.5", ls=":", lw=1, label=f"error 0 (drawn at {floor:g})")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(xlabel)

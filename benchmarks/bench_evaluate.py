@@ -193,6 +193,8 @@ def _plot(points) -> None:
         ax.scatter(sec, max(err, floor), marker=markers[method], color=colors[n], s=45)
         if radius:
             ax.scatter(sec, radius, marker=markers[method], facecolors="none", edgecolors=colors[n], s=45)
+    if any(err <= floor for _m, _n, _s, err, _r in points):
+        ax.axhline(floor, color="0.5", ls=":", lw=1, label=f"error 0 (drawn at {floor:g})")
     for method, marker in markers.items():
         ax.scatter([], [], marker=marker, color="gray", label=method)
     for n, color in colors.items():
