@@ -78,7 +78,10 @@ def tex(label: str, value, echo: bool = True) -> None:
     if echo:
         print(label, "=", fmt(value))
     try:
-        latex = sp.latex(sp.sympify(_sympy_ready(value)))
+        expr = sp.sympify(_sympy_ready(value))
+        if expr.atoms(sp.Float) and not isinstance(value, float):
+            raise TypeError("an exact value came out as a float")  # show the exact text instead
+        latex = sp.latex(expr)
     except (sp.SympifyError, TypeError, AttributeError):
         latex = r"\text{" + fmt(value).replace("_", r"\_") + "}"
     if not STEPS:
@@ -93,6 +96,8 @@ def _sympy_ready(value):
 
     if isinstance(value, type(mpq(0))):
         return sp.Rational(int(value.numerator), int(value.denominator))
+    if hasattr(value, "to_sympy"):  # exact numbers and objects (Q(sqrt D), curves): never via float
+        return value.to_sympy()
     if isinstance(value, np.ndarray):
         value = value.tolist()
     if isinstance(value, (list, tuple)):

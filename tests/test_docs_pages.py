@@ -65,3 +65,27 @@ def test_scene_format_reference_covers_every_schema_key():
         assert f"| `{kind}` |" in page
     for limit, value in LIMITS.items():
         assert f"| `{limit}` | {value} |" in page
+
+
+def test_teaching_page_typesets_the_recorded_steps(tmp_path, monkeypatch):
+    """A teaching page shows each step of the script's output, the values recorded by
+    ``_teach.tex`` as display math, and the pictures."""
+    import sys
+
+    sys.path.insert(0, str(DOCS / "_ext"))
+    import exactcagd_docs as ext
+
+    monkeypatch.setattr(ext, "GENERATED", tmp_path)
+    (tmp_path / "teaching").mkdir()
+    run = tmp_path / "run"
+    run.mkdir()
+    (run / "stdout.txt").write_text("\n== 1.2 angle [u, v]\nu.v = 3\n\n== 1.3 next\nx = 1/2\n")
+    (run / "teach_01_basics.steps.json").write_text(json.dumps(
+        [{"title": "1.2 angle [u, v]", "items": [{"label": "cos theta", "latex": "\\frac{\\sqrt{609}}{203}"}]},
+         {"title": "1.3 next", "items": []}]))
+    ext._teaching_page("teach_01_basics", run, [run / "ch01_basics.png"])
+    page = (tmp_path / "teaching" / "teach_01_basics.md").read_text()
+    assert "## 1.2 angle \\[u, v\\]" in page and "## 1.3 next" in page
+    assert "```{math}\n\\text{cos theta} = \\frac{\\sqrt{609}}{203}\n```" in page
+    assert "u.v = 3" in page and "x = 1/2" in page
+    assert "```{image} ../gallery/teach_01_basics__ch01_basics.png" in page
