@@ -91,6 +91,7 @@ def build_parser() -> argparse.ArgumentParser:
     verify.add_argument("--fast", action="store_true", help="skip the claims marked slow")
     verify.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
     verify.add_argument("--trace", metavar="KEY", help="print the derivation trace of one claim (substring of its key, or its label as printed by verify)")
+    verify.add_argument("--trace-format", choices=("text", "markdown", "latex"), default="text", help="--trace output: plain text (default), or a Markdown / LaTeX block for lecture notes")
     verify.add_argument("--html", metavar="DIR", default=None, help="also render the ledger as browsable HTML pages in DIR")
     verify.add_argument("--out", default=None, help="directory for LEDGER.md and ledger.json (default: the current directory; --doc/--fast runs write LEDGER-<doc>[-fast].md, never the full ledger)")
     verify.set_defaults(func=_lazy("exactcagd.apps.verify", "main"))

@@ -224,7 +224,7 @@ def ledger_basename(doc=None, fast=False) -> str:
 
 def main(args) -> int:
     if args.trace:
-        return _trace(args.trace)
+        return _trace(args.trace, getattr(args, "trace_format", "text"))
     check_output_dir(args.out if args.out else _default_out())  # before the work, not after it
     claims = select_claims(args.doc, args.fast)
     if not claims:
@@ -268,7 +268,12 @@ def _summary_table(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def _trace(fragment: str) -> int:
+def _trace(fragment: str, fmt: str = "text") -> int:
+    """Print the derivation trace of the matching claims; ``fmt`` "markdown" or "latex" gives a
+    block to paste into lecture notes (the steps verbatim, the claim as its heading)."""
+    import contextlib
+    import io
+
     from exactcagd.proofs._ledger import discover
 
     claims = discover()
@@ -280,12 +285,31 @@ def _trace(fragment: str) -> int:
         print(f"no claim key or label matches {fragment!r}", file=sys.stderr)
         return 1
     for c in matches:
-        print(f"== {c.key}: {c.doc} {c.section} {c.ref}\n   {c.statement}")
-        if c.trace is None:
-            print("   (no derivation trace for this claim)")
-        else:
-            c.trace()
+        steps = io.StringIO()
+        with contextlib.redirect_stdout(steps):
+            if c.trace is None:
+                print("(no derivation trace for this claim)")
+            else:
+                c.trace()
+        print(_trace_block(c, steps.getvalue().rstrip("\n"), fmt))
     return 0
+
+
+def _trace_block(c, steps: str, fmt: str) -> str:
+    title = f"{c.doc} {c.section} {c.ref}"
+    if fmt == "markdown":
+        return f"### {title}\n\n{c.statement}\n\n```text\n{steps}\n```\n"
+    if fmt == "latex":
+        special = {"\\": r"\textbackslash{}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
+                   **{ch: "\\" + ch for ch in "&%$#_{}"}}
+
+        def esc(text: str) -> str:
+            return text.translate(str.maketrans(special))
+
+        return (f"\\subsection*{{{esc(title)}}}\n{esc(c.statement)}\n\n"
+                f"\\begin{{verbatim}}\n{steps}\n\\end{{verbatim}}\n")
+    indented = "\n".join("   " + line if line else line for line in steps.splitlines())
+    return f"== {c.key}: {title}\n   {c.statement}\n{indented}"
 
 
 def _atomic_write(path: Path, text: str) -> None:
