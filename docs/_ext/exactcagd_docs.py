@@ -252,7 +252,8 @@ def gallery_pages(folder: Path) -> None:
 def _teaching_page(key: str, folder: Path, pngs: list[Path]) -> None:
     script = EXAMPLES_DIR / f"{key}.py"
     doc = _module_docstring(script)
-    lines = [f"# {doc.splitlines()[0] if doc else key}", "",
+    title = " ".join(doc.split("\n\n")[0].split()) if doc else key
+    lines = [f"# {_md_text(title)}", "",
              f"Run `python examples/{key}.py`.  The steps below are the script's own output, produced by "
              "the documentation build; exact values are typeset by sympy where the script records them.", ""]
     for png in pngs:
