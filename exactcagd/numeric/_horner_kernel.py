@@ -124,44 +124,77 @@ def _horner_curve(c, c_abs_sum, t, g, eta, min_normal, values, radii, bound):
 def _project(hom, rad, u_quotient, eta, values, radii):
     """``values = X / W`` with certified radii from the homogeneous ``hom`` and ``rad``.
 
-    The operations of :func:`exactcagd.numeric.evaluation._project` in the same order
-    (``up`` is the bit increment after ``+ 0.0``, ``down`` is ``nextafter`` towards ``-inf``)::
+    The operations of :func:`exactcagd.numeric.evaluation._project` in the same order, in
+    blocks of parameters with one pass per operation (``up`` is the bit increment after
+    ``+ 0.0``, ``down`` the bit decrement where its result is used)::
 
-        |X^/W^ - X/W| <= (e_X + |X^| + e_X) e_W / (|W^| - e_W)) / |W^| + u |X^/W^| + eta
+        |X^/W^ - X/W| <= (e_X + (|X^| + e_X) e_W / (|W^| - e_W)) / |W^| + u |X^/W^| + eta
     """
     count, dim = values.shape
-    cell = np.empty(1)
-    bits = cell.view(np.int64)
-    for p in range(count):
-        w = hom[p, dim]
-        ew = rad[p, dim]
-        aw = abs(w)
-        low = np.nextafter(aw - ew, -np.inf)
-        valid = low > 0
+    abs_w = np.empty(BLOCK)
+    err_w = np.empty(BLOCK)
+    low = np.empty(BLOCK)
+    low_bits = low.view(np.int64)
+    valid = np.empty(BLOCK, dtype=np.bool_)
+    q = np.empty(BLOCK)
+    r = np.empty(BLOCK)
+    r_bits = r.view(np.int64)
+    d = np.empty(BLOCK)
+    d_bits = d.view(np.int64)
+    for start in range(0, count, BLOCK):
+        m = min(BLOCK, count - start)
+        for i in range(m):
+            abs_w[i] = abs(hom[start + i, dim])
+            err_w[i] = rad[start + i, dim]
+            low[i] = abs_w[i] - err_w[i]
+        for i in range(m):
+            # down(x) = nextafter(x, -inf) is only read where it is > 0, i.e. for x > 0
+            # (+inf included): there it is the bit decrement; elsewhere mark it invalid
+            if low[i] > 0:
+                low_bits[i] -= 1
+            else:
+                low[i] = -1.0
+        for i in range(m):
+            valid[i] = low[i] > 0
         for j in range(dim):
-            x = hom[p, j]
-            ex = rad[p, j]
-            q = x / w
-            values[p, j] = q
-            cell[0] = abs(x) + ex + 0.0
-            bits[0] += 1
-            cell[0] = cell[0] * ew + 0.0
-            bits[0] += 1
-            cell[0] = cell[0] / (low if valid else 1.0) + 0.0
-            bits[0] += 1
-            cell[0] = ex + cell[0] + 0.0
-            bits[0] += 1
-            cell[0] = cell[0] / (aw if valid else 1.0) + 0.0
-            bits[0] += 1
-            d = cell[0]
-            cell[0] = abs(q) * u_quotient + 0.0
-            bits[0] += 1
-            cell[0] = cell[0] + eta + 0.0
-            bits[0] += 1
-            cell[0] = d + cell[0] + 0.0
-            bits[0] += 1
-            r = cell[0] if valid else np.inf
-            radii[p, j] = r if math.isfinite(q) and math.isfinite(r) else np.inf
+            for i in range(m):
+                x = hom[start + i, j]
+                q[i] = x / hom[start + i, dim]
+                values[start + i, j] = q[i]
+                r[i] = abs(x) + rad[start + i, j] + 0.0
+            for i in range(m):
+                r_bits[i] += 1
+            for i in range(m):  # x_bound = up(up(|x| + e_x) e_w)
+                r[i] = r[i] * err_w[i] + 0.0
+            for i in range(m):
+                r_bits[i] += 1
+            for i in range(m):
+                r[i] = r[i] / (low[i] if valid[i] else 1.0) + 0.0
+            for i in range(m):
+                r_bits[i] += 1
+            for i in range(m):  # term = up(e_x + up(x_bound / low))
+                r[i] = rad[start + i, j] + r[i] + 0.0
+            for i in range(m):
+                r_bits[i] += 1
+            for i in range(m):  # d = up(term / |w|)
+                r[i] = r[i] / (abs_w[i] if valid[i] else 1.0) + 0.0
+            for i in range(m):
+                r_bits[i] += 1
+            for i in range(m):
+                d[i] = abs(q[i]) * u_quotient + 0.0
+            for i in range(m):
+                d_bits[i] += 1
+            for i in range(m):
+                d[i] = d[i] + eta + 0.0
+            for i in range(m):
+                d_bits[i] += 1
+            for i in range(m):
+                r[i] = r[i] + d[i] + 0.0
+            for i in range(m):
+                r_bits[i] += 1
+            for i in range(m):
+                ri = r[i] if valid[i] else np.inf
+                radii[start + i, j] = ri if math.isfinite(q[i]) and math.isfinite(ri) else np.inf
 
 
 if AVAILABLE:
