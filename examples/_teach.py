@@ -28,7 +28,10 @@ def out_path(name: str) -> Path:
     figures are finished here: every unlabelled axis gets its coordinate name (x, y, z)."""
     OUT.mkdir(parents=True, exist_ok=True)
     for number in plt.get_fignums():
-        label_axes(plt.figure(number))
+        fig = plt.figure(number)
+        label_axes(fig)
+        if type(fig.get_layout_engine()).__name__ != "ConstrainedLayoutEngine":
+            fig.tight_layout()  # again: room for the labels just added
     return OUT / name
 
 

@@ -51,21 +51,32 @@ bnds = [float(b) for b in report["bounds"]]
 axs[0].semilogy(range(len(errs)), np.maximum(errs, 1e-30), label="|float - exact|")
 axs[0].semilogy(range(len(bnds)), bnds, label="certified bound")
 axs[0].set_title("4: float forward differencing of t^3, delta = 1/3")
+axs[0].set_xlabel("step k")
+axs[0].set_ylabel("error of the k-th value")
 axs[0].legend(fontsize=8)
 t = np.linspace(0, 1, 200)
-for name, style in (("timmer", "-"), ("ball", "--"), ("overhauser", ":")):
+styles = (("timmer", "-"), ("ball", "--"), ("overhauser", ":"))
+for name, style in styles:
     for k, f in enumerate(getattr(bl, f"{name}_basis")()):
         fn = __import__("sympy").lambdify(bl.T, f, "numpy")
         axs[1].plot(t, np.broadcast_to(fn(t), t.shape), style, color=f"C{k}", lw=1)
 axs[1].axhline(0, color="k", lw=0.5)
-axs[1].set_title("5: Timmer (-), Ball (--), Overhauser (:)")
+for name, style in styles:  # the legend: line style = basis, colour = index
+    axs[1].plot([], [], style, color="k", lw=1, label=name)
+for k in range(4):
+    axs[1].plot([], [], color=f"C{k}", lw=3, label=f"function {k}")
+axs[1].legend(fontsize=7, ncol=2, loc="upper center")
+axs[1].set_xlabel("t")
+axs[1].set_title("5: blending functions")
 for name, col in (("timmer", "C0"), ("ball", "C1")):
     c = getattr(bl, f"{name}_to_bezier")(Q)
     axs[2].plot(*sample(c).T, color=col, label=name)
-axs[2].plot(*np.array(Q, dtype=float).T, "k--o", ms=3)
-for seg in bl.overhauser_spline([[-2, -1]] + Q + [[7, 2]]):
-    axs[2].plot(*sample(seg).T, color="C2", lw=1)
-axs[2].set_title("5: curves on the same control points (green: Overhauser)")
+axs[2].plot(*np.array(Q, dtype=float).T, "k--o", ms=3, label="control points")
+for k, seg in enumerate(bl.overhauser_spline([[-2, -1]] + Q + [[7, 2]])):
+    axs[2].plot(*sample(seg).T, color="C2", lw=1, label="overhauser spline" if k == 0 else None)
+axs[2].set_title("5: curves on the same control points")
+axs[2].set_xlabel("x")
+axs[2].set_ylabel("y")
 axs[2].legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(out_path("ch04_05.png"), dpi=110)

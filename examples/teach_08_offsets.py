@@ -51,7 +51,7 @@ def _offset_samples(curve, rho):
 ax = axes[0]
 ax.plot(*sample(ph).T, "k", label="PH cubic")
 ax.plot(*sample(off).T, "r", label="exact rational offset, rho = 1/4")
-ax.plot(*polygon(off).T, "r:", lw=0.8)
+ax.plot(*polygon(off).T, "r:", lw=0.8, label="its control polygon")
 ax.set_title("PH cubic: exact offset")
 ax = axes[1]
 ax.plot(*sample(parabola).T, "k", label="parabola")
@@ -61,9 +61,9 @@ ax = axes[2]
 ax.plot(*sample(vertex).T, "k", label="parabola")
 for rho, color in ((Fraction(-1, 4), "g"), (-4, "r")):
     ax.plot(*_offset_samples(vertex, float(rho)).T, color, lw=1, label=f"offset rho = {rho} (float samples)")
-for t in offset_cusps(vertex, -4):
+for k, t in enumerate(offset_cusps(vertex, -4)):
     p = _offset_samples(vertex, -4.0)[int(round(float(t) * 399))]
-    ax.plot(*p, "ko")
+    ax.plot(*p, "ko", label="cusps (exact parameters)" if k == 0 else None)
 ax.set_title("cusps where the radius of curvature is |rho|")
 for ax in axes:
     ax.set_aspect("equal", adjustable="datalim")
