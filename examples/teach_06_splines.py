@@ -82,19 +82,24 @@ def main():
     ax.plot(*np.array(P + P[:1], dtype=float).T, "o--", color="tab:blue", label="control polygon")
     ax.plot(*np.vstack([split.points_array(), split.points_array()[:1]]).astype(float).T, "s:", color="tab:red", label="after splitting d_2")
     ax.set_aspect("equal")
+    ax.set_title("6.5 periodic cubic, 6.13 knot interval split", fontsize=10)
     ax.legend(fontsize=7)
     ax = axes[1]
-    for piece in (c1, c2, c3):
-        ax.plot(*sample(piece).T, "k-", lw=2)
-        ax.plot(*polygon(piece).T, ":", color="gray")
-    ax.plot(*np.array(chain.control_points, dtype=float).T, "o-", color="tab:green", label="one B-spline (6.12)")
+    for k, piece in enumerate((c1, c2, c3)):
+        ax.plot(*sample(piece).T, "k-", lw=2, label="three Bézier curves" if k == 0 else None)
+        ax.plot(*polygon(piece).T, ":", color="gray", label="their control polygons" if k == 0 else None)
+    ax.plot(*np.array(chain.control_points, dtype=float).T, "o-", color="tab:green", label="control polygon of the one B-spline (6.12)")
     ax.set_aspect("equal")
+    ax.set_title("6.12 Bézier chain -> one B-spline", fontsize=10)
     ax.legend(fontsize=7)
     ax = axes[2]
     xs = [mpq(i, 50) * 5 for i in range(51)]
     ax.plot([float(x) for x in xs], [float(bx.basis_function([0, 1, 2, 4, 5], x)) for x in xs], "k-", label="N[0,1,2,4,5]")
     for cf, ks in parts:
         ax.plot([float(x) for x in xs], [float(cf * bx.basis_function(ks, x)) for x in xs], "--", label=f"{fmt(cf)} N{fmt(tuple(ks))}")
+    ax.set_xlabel("t")
+    ax.set_ylabel("basis function value")
+    ax.set_title("6.14 N[0,1,2,4,5] refined at t = 3", fontsize=10)
     ax.legend(fontsize=7)
     fig.tight_layout()
     path = out_path("ch06_splines.png")
