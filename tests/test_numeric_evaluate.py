@@ -367,10 +367,12 @@ def _numpy_fallback(monkeypatch, curve, ts):
 def test_default_kernel_is_bit_identical_to_numpy_horner(monkeypatch, curve, ts):
     """issue 18: the compiled default (numba) does the numpy Horner path's float operations;
     its values and radii are the same bits, and certified against exact evaluation."""
+    import exactcagd.numeric.evaluation as module
     from exactcagd.numeric import _horner_kernel
 
     if not _horner_kernel.AVAILABLE:
         pytest.skip("numba not installed: the default runs the numpy path itself")
+    monkeypatch.setattr(module, "KERNEL_MIN_POINTS", 0)  # the kernel even for a few points
     ts = ts + [0.0, 5e-324, 2.0**-1060, 0.5, np.nextafter(0.5, 1.0), 1 - 2.0**-53, 1.0]
     values, radii = evaluate(curve, ts)
     ref_values, ref_radii = _numpy_fallback(monkeypatch, curve, ts)
@@ -387,7 +389,7 @@ def test_default_kernel_long_input_and_planted_violation():
     rng = np.random.default_rng(5)
     curve = BezierCurve([[Fraction(int(x), 1 << 12) for x in rng.integers(-4096, 4096, 3)] for _ in range(11)],
                         weights=[Fraction(int(w), 8) for w in rng.integers(4, 16, 11)])
-    ts = rng.random(1500)
+    ts = rng.random(5000)  # above KERNEL_MIN_POINTS: the compiled path, several blocks
     values, radii = evaluate(curve, ts)
     idx = rng.choice(ts.size, 40, replace=False)
     exact = [exact_point(curve.control_points, curve.weights, q(ts[i])) for i in idx]

@@ -20,6 +20,7 @@ True
 
 from __future__ import annotations
 
+import importlib.util
 import math
 import os
 
@@ -27,14 +28,10 @@ import numpy as np
 
 __all__ = ["AVAILABLE", "horner_curve", "project"]
 
-try:  # numba is optional: pip install numba (wheels for Linux, macOS, Windows)
-    if os.environ.get("EXACTCAGD_NO_NUMBA"):
-        raise ImportError("disabled by EXACTCAGD_NO_NUMBA")
-    import numba
-except ImportError:  # pragma: no cover - depends on the environment
-    numba = None
-
-AVAILABLE = numba is not None
+#: numba installed (and not switched off by ``EXACTCAGD_NO_NUMBA``); it is imported, and the
+#: kernels compiled (or loaded from numba's cache), at their first call, not at import time
+#: (importing numba costs ~0.15 s)
+AVAILABLE = not os.environ.get("EXACTCAGD_NO_NUMBA") and importlib.util.find_spec("numba") is not None
 
 
 #: parameters per block: the block's work arrays stay in L1 and every inner loop runs over
@@ -197,10 +194,25 @@ def _project(hom, rad, u_quotient, eta, values, radii):
                 radii[start + i, j] = ri if math.isfinite(q[i]) and math.isfinite(ri) else np.inf
 
 
-if AVAILABLE:
-    # error_model="numpy": a division by zero gives inf/nan as in numpy, never an exception
-    _jit = numba.njit(cache=True, nogil=True, fastmath=False, error_model="numpy")
-    horner_curve = _jit(_horner_curve)
-    project = _jit(_project)
-else:  # pragma: no cover - depends on the environment
-    horner_curve = project = None
+_COMPILED: dict = {}
+
+
+def _compiled(func):
+    kernel = _COMPILED.get(func.__name__)
+    if kernel is None:
+        import numba
+
+        # error_model="numpy": a division by zero gives inf/nan as in numpy, never an exception
+        kernel = numba.njit(cache=True, nogil=True, fastmath=False, error_model="numpy")(func)
+        _COMPILED[func.__name__] = kernel
+    return kernel
+
+
+def horner_curve(c, c_abs_sum, t, g, eta, min_normal, values, radii, bound) -> None:
+    """The compiled :func:`_horner_curve` (numba; compiled at the first call)."""
+    _compiled(_horner_curve)(c, c_abs_sum, t, g, eta, min_normal, values, radii, bound)
+
+
+def project(hom, rad, u_quotient, eta, values, radii) -> None:
+    """The compiled :func:`_project` (numba; compiled at the first call)."""
+    _compiled(_project)(hom, rad, u_quotient, eta, values, radii)

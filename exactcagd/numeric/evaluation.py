@@ -93,7 +93,7 @@ from gmpy2 import mpq
 
 from ..errors import DomainError, InexactInputError, InputError
 from ..exact import bernstein as bz
-from ..exact.scalars import to_rational
+from ..exact.scalars import short_repr, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 from . import _horner_kernel
@@ -104,8 +104,15 @@ __all__ = ["evaluate", "evaluate_surface", "METHODS"]
 
 METHODS = ("auto", "decasteljau", "horner", "power")
 #: run the default method through the compiled kernel when numba is installed (tests
-#: switch it off to check the numpy fallback against it)
+#: switch it off to check the numpy fallback against it) ...
 KERNEL = True
+#: ... for at least this many parameters per call: below it the numpy path is as fast, and
+#: a short script does not pay numba's import and cache load (~0.5 s) for a few points
+KERNEL_MIN_POINTS = 4096
+
+
+def _use_kernel(count: int) -> bool:
+    return KERNEL and count >= KERNEL_MIN_POINTS and _horner_kernel.AVAILABLE
 
 #: upper bound of u / (1 - u), the relative rounding error of one correctly rounded quotient
 _U_QUOTIENT = round_up(mpq(1, 2**53) / (1 - mpq(1, 2**53)))
@@ -416,16 +423,9 @@ class _Default(_HornerBernstein):
     name = "auto"
     check = _DeCasteljau.check
 
-    @staticmethod
-    def work(coefficients: int, dim: int) -> int:
-        """The kernel works in blocks of its own: one chunk of ``_CHUNK_FLOATS`` parameters."""
-        if _horner_kernel.AVAILABLE and KERNEL:
-            return 1
-        return _HornerBernstein.work(coefficients, dim)
-
     @classmethod
     def curve(cls, c, c_abs, pair, t, values, radii) -> None:
-        if not _horner_kernel.AVAILABLE or not KERNEL:
+        if not _use_kernel(t.size):
             super().curve(c, c_abs, pair, t, values, radii)
             return
         n = c.shape[0] - 1
@@ -535,7 +535,7 @@ def _one_parameter(x, where: str) -> float:
     f = round_nearest(q)
     if not math.isfinite(f) or mpq(*f.as_integer_ratio()) != q:
         raise InexactInputError(
-            f"{where}: parameter {x!r} is not exactly a binary64 number; evaluate it exactly "
+            f"{where}: parameter {short_repr(x)} is not exactly a binary64 number; evaluate it exactly "
             "(BezierCurve.evaluate) or round it to a float explicitly"
         )
     return f
@@ -672,7 +672,7 @@ def evaluate(curve, ts, method: str = "auto", bound: bool = True):
         with np.errstate(all="ignore"):  # overflow shows up as an infinite radius
             m.curve(c, c_abs, pair, t[sl], values[sl], radii[sl] if bound else None)
     if curve.is_rational:
-        if bound and m is _Default and _horner_kernel.AVAILABLE and KERNEL:
+        if bound and m is _Default and _use_kernel(t.size):
             hom, hom_radii = values, radii
             values, radii = np.empty((2, t.size, dim - 1))
             _horner_kernel.project(hom, hom_radii, _U_QUOTIENT, ETA, values, radii)
