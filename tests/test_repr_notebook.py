@@ -104,3 +104,32 @@ def test_plot_of_intersections_and_approximations():
     ax = approx.plot()
     assert _legend(ax) == [f"{len(approx.segments)} piece(s), bound {float(approx.distance_bound):.2g}"]
     assert ax.get_zlabel() == "z"
+
+
+def _de_boor_sympy(points, knots, weights, t):
+    """Independent reference: the Cox-de Boor recursion (notes 6.14) in sympy at a rational t."""
+    knots = [sp.Rational(str(k)) for k in knots]
+    p = len(knots) - len(points) - 1
+
+    def N(i, k):
+        if k == 0:
+            last = knots[i + 1] == knots[-1] and knots[i] < knots[i + 1]
+            return sp.Integer(1) if (knots[i] <= t < knots[i + 1]) or (last and t == knots[-1]) else sp.Integer(0)
+        left = (t - knots[i]) / (knots[i + k] - knots[i]) * N(i, k - 1) if knots[i + k] != knots[i] else 0
+        right = (knots[i + k + 1] - t) / (knots[i + k + 1] - knots[i + 1]) * N(i + 1, k - 1) if knots[i + k + 1] != knots[i + 1] else 0
+        return left + right
+
+    basis = [N(i, p) * sp.Rational(str(w)) for i, w in enumerate(weights)]
+    return [sum(b * sp.Rational(str(pt[d])) for b, pt in zip(basis, points)) / sum(basis) for d in range(len(points[0]))]
+
+
+def test_bspline_to_sympy_and_latex_match_de_boor():
+    points = [[0, 0], [1, 2], ["5/2", 3], [4, "1/2"], [5, 2]]
+    knots = [0, 0, 0, "1/3", "1/2", 1, 1, 1]
+    weights = [1, 2, "1/2", 1, 3]
+    curve = BSplineCurve(points, knots, weights=weights)
+    t = sp.Symbol("t")
+    expr = curve.to_sympy()
+    for value in [sp.Rational(k, 12) for k in range(13)]:
+        assert list(expr.subs(t, value)) == _de_boor_sympy(points, knots, weights, value), value
+    assert curve._repr_latex_() == f"$P(t) = {sp.latex(expr)}$"

@@ -174,6 +174,32 @@ class BSplineCurve(_ByValue):
             return [(span, BezierCurve._trusted(arr, None)) for span, arr in pieces]
         return [(span, BezierCurve.from_homogeneous(arr)) for span, arr in pieces]
 
+    def to_sympy(self, t=None):
+        """The curve as a sympy column ``Matrix`` of ``Piecewise`` rational functions of ``t``:
+        on each knot span ``[a, b)`` (the last one closed) the exact Bézier piece of
+        :meth:`to_bezier` at ``(t - a)/(b - a)`` (notes 6.3)."""
+        import sympy
+
+        from ..exact.scalars import to_sympy as exact_to_sympy
+
+        t = sympy.Symbol("t") if t is None else t
+        pieces = self.to_bezier()
+        rows = []
+        for k in range(self.dimension):
+            branches = []
+            for j, ((a, b), piece) in enumerate(pieces):
+                a, b = exact_to_sympy(a), exact_to_sympy(b)
+                local = piece.to_sympy((t - a) / (b - a))[k]
+                branches.append((sympy.cancel(local), (t <= b) if j == len(pieces) - 1 else (t < b)))
+            rows.append(sympy.Piecewise(*branches))
+        return sympy.Matrix(rows)
+
+    def _repr_latex_(self) -> str:
+        """Jupyter shows the curve typeset, piece by piece."""
+        from ._display import latex
+
+        return latex(self, "P(t)")
+
     def to_dict(self) -> dict:
         out = {
             "degree": self._degree,
