@@ -39,6 +39,7 @@ from pathlib import Path
 from .errors import OutputError
 
 __all__ = [
+    "atomic_open",
     "check_output_dir",
     "check_output_file",
     "atomic_write_bytes",
@@ -179,28 +180,32 @@ def _check_replaceable(path: Path) -> None:
         raise OutputError(f"refusing to replace {path}: it is {kind}")
 
 
-def atomic_write_bytes(path, data: bytes) -> None:
-    """Write ``data`` to ``path`` atomically; replace only an absent path or a regular file.
+@contextlib.contextmanager
+def atomic_open(path) -> Iterator:
+    """Open ``path`` for writing bytes atomically: the one mechanism behind every output file.
 
-    The bytes go to a temporary file in the same folder, are flushed to disk
-    (``fsync``), and the temporary file is renamed onto ``path`` (``os.replace``,
-    atomic on POSIX).  On any failure, ``KeyboardInterrupt`` included, the temporary
-    file is removed and an existing ``path`` keeps its old content.  The folder must
-    exist.
+    Yields a binary file handle on a temporary file in the same folder; when the block
+    ends normally the file is flushed to disk (``fsync``) and renamed onto ``path``
+    (``os.replace``, atomic on POSIX).  On any failure, ``KeyboardInterrupt`` included,
+    the temporary file is removed and an existing ``path`` keeps its old content.
+    Streams of any length can be written without holding them in memory.  The folder
+    must exist.
 
     Raises
     ------
     exactcagd.errors.OutputError
         If ``path`` exists and is not a regular file (a device, FIFO, socket,
-        directory or symbolic link), or lies under /proc, /sys or /dev.
+        directory or symbolic link), or lies under /proc, /sys or /dev; checked before
+        writing and again before the rename.
 
     Examples
     --------
     >>> import tempfile, pathlib
-    >>> p = pathlib.Path(tempfile.mkdtemp()) / "x.bin"
-    >>> atomic_write_bytes(p, b"1/3")
+    >>> p = pathlib.Path(tempfile.mkdtemp()) / "lines.jsonl"
+    >>> with atomic_open(p) as handle:
+    ...     _ = handle.write(b"1\\n"); _ = handle.write(b"2\\n")
     >>> p.read_bytes()
-    b'1/3'
+    b'1\\n2\\n'
     """
     path = _absolute(path)
     _check_replaceable(path)
@@ -210,7 +215,7 @@ def atomic_write_bytes(path, data: bytes) -> None:
         raise OutputError(f"cannot write {path}: {exc.strerror or exc}") from None
     try:
         with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
+            yield handle
             handle.flush()
             os.fsync(handle.fileno())
         os.chmod(tmp, 0o666 & ~_UMASK)  # mkstemp makes 0600 files; outputs get the usual mode
@@ -220,6 +225,22 @@ def atomic_write_bytes(path, data: bytes) -> None:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(tmp)
         raise
+
+
+def atomic_write_bytes(path, data: bytes) -> None:
+    """Write ``data`` to ``path`` atomically (:func:`atomic_open`); replace only an absent
+    path or a regular file.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> p = pathlib.Path(tempfile.mkdtemp()) / "x.bin"
+    >>> atomic_write_bytes(p, b"1/3")
+    >>> p.read_bytes()
+    b'1/3'
+    """
+    with atomic_open(path) as handle:
+        handle.write(data)
 
 
 def atomic_write_text(path, text: str) -> None:

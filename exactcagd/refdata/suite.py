@@ -24,13 +24,11 @@ folder all raise :class:`exactcagd.errors.InputError` /
 from __future__ import annotations
 
 import hashlib
-import os
 import shutil
 import sys
-import tempfile
 
 from ..errors import InputError
-from ..outputs import atomic_write_text, check_output_dir, check_output_file, staged_dir
+from ..outputs import atomic_open, atomic_write_text, check_output_dir, check_output_file, staged_dir
 from .kinds import KINDS, kind_named
 from .manifest import build_manifest, manifest_text, schema_path
 from .options import (
@@ -103,17 +101,8 @@ def write_kind(out, kind: str, count: int, seed: int = 0, degrees=None, family=N
                 n += 1
             sys.stdout.flush()
             return n
-        fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
-        try:
-            with os.fdopen(fd, "wb") as handle:
-                n, _ = _stream_to(handle, lines)
-            os.chmod(tmp, 0o644)
-            check_output_file(target)  # again: the path may have changed while we wrote
-            os.replace(tmp, target)
-        except BaseException:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
-            raise
+        with atomic_open(target) as handle:
+            n, _ = _stream_to(handle, lines)
         return n
     finally:
         bar.close()
