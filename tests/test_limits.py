@@ -261,3 +261,10 @@ def test_float_companions_of_huge_control_points_follow_the_inf_rule():
     assert points[0][0] == math.inf and points[1][1] == 1 / 3 and weights[1] == math.inf
     net, _ = BezierSurface([[[-big, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]).to_float()
     assert net[0][0][0] == -math.inf and net[1][1][2] == 1.0
+
+
+@pytest.mark.parametrize("value", [2**62, 10**30, 10**5000], ids=["2^62", "10^30", "10^5000"])
+def test_counts_beyond_2_62_are_a_limit_error_with_a_short_message(value):
+    with pytest.raises(LimitError, match="r = ") as info:
+        to_count(value, where="r")
+    assert len(str(info.value)) < 200

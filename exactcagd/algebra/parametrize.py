@@ -125,15 +125,24 @@ def parametrize_rational_cubic(f, t=None):
     raise InputError("the cubic has no (rational affine) double point: genus 1, not rational")
 
 
+def _point(p, name: str) -> tuple:
+    """A user point ``(x, y)`` as two sympy Rationals (exactly, through :func:`to_rational`)."""
+    if isinstance(p, (str, bytes, bytearray)) or not hasattr(p, "__len__") or len(p) != 2:
+        raise InputError(f"{name}: expected a point (x, y), got {short_repr(p, 40)}")
+    return tuple(to_sympy(to_rational(v, where=name)) for v in p)
+
+
 def undetermined_coefficients(points, monomials):
     """Coefficients ``c`` with ``sum c_k m_k(x_i, y_i) = 0`` for every point (19.6).
 
     Returns a basis of the solution space (lists of sympy Rationals): the matrix of
     19.6 has one row per point and one column per monomial.
     """
+    if isinstance(points, (str, bytes, bytearray)) or not hasattr(points, "__iter__"):
+        raise InputError(f"points: expected a sequence of points (x, y), got {short_repr(points, 40)}")
     rows = []
-    for p in points:
-        px, py = (sympy.Rational(str(v)) for v in p)
+    for k, p in enumerate(points):
+        px, py = _point(p, f"points[{k}]")
         rows.append([sympy.sympify(m).subs({X_SYM: px, Y_SYM: py}) for m in monomials])
     return [list(v) for v in sympy.Matrix(rows).nullspace()]
 
@@ -162,9 +171,7 @@ def circle_through_points(p1, p2, p3):
     """
     rows, rhs = [], []
     for k, p in enumerate((p1, p2, p3)):
-        if isinstance(p, (str, bytes, bytearray)) or not hasattr(p, "__len__") or len(p) != 2:
-            raise InputError(f"p{k + 1}: expected a point (x, y), got {short_repr(p, 40)}")
-        px, py = (to_sympy(to_rational(v, where=f"p{k + 1}")) for v in p)
+        px, py = _point(p, f"p{k + 1}")
         rows.append([px, py, 1])
         rhs.append(px**2 + py**2)
     M = sympy.Matrix(rows)

@@ -139,7 +139,8 @@ def _trim(a: list) -> list:
     if isinstance(a, (str, bytes, bytearray)) or not hasattr(a, "__len__") or len(a) == 0:
         raise InputError(f"expected a non-empty list of coefficients, got {short_repr(a, 40)}")
     limits.check("max_degree", len(a) - 1, "coefficient list: degree")
-    a = list(a)
+    # plain numbers (ints, strings, Fractions, floats) enter exactly; sympy and flint entries are kept as they are
+    a = [x if isinstance(x, sympy.Basic) or type(x).__module__.startswith("flint") else to_rational(x, where=f"coefficient {k}") for k, x in enumerate(a)]
     while len(a) > 1 and a[-1] == 0:
         a.pop()
     return a
@@ -364,6 +365,8 @@ def resultant(f, g, var, method: str = "flint"):
         b = [int(c.get((), 0)) for c in gc]
     if not method in ("sylvester", "bezout", "flint"):
         raise InputError(f"unknown resultant method {method!r} (sylvester, bezout, flint)")
+    if method != "flint":  # Bareiss on an (m + n)-square matrix of polynomials: far slower than flint's
+        limits.check("max_implicit_degree", max(m, n), f"resultant by the {method} matrix: degree in {var}")
     value = resultant_coeffs(a, b, method)
     scale = sympy.Rational(1, fden**n * gden**m)
     if isinstance(f, sympy.Poly) and isinstance(g, sympy.Poly):

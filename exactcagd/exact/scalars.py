@@ -34,7 +34,7 @@ import gmpy2
 from gmpy2 import mpq, mpz
 
 from .. import limits
-from ..errors import InexactInputError, InputError
+from ..errors import InexactInputError, InputError, LimitError
 
 __all__ = [
     "Rational",
@@ -344,7 +344,10 @@ def to_count(x, *, where: str = "count", error: type = InputError) -> int:
     """
     if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < 0:
         raise error(f"{where} must be a non-negative integer, got {short_repr(x)}")
-    return int(x)
+    value = int(x)  # numpy, gmpy2 and sympy integers alike
+    if value.bit_length() > 62:  # no degree, amount or count of 2^62 can be honoured, whatever the limits
+        raise LimitError(f"{where} = {short_repr(value)} exceeds every resource limit (counts must stay below 2^62)")
+    return value
 
 
 def short_repr(x, limit: int = 80) -> str:

@@ -505,7 +505,10 @@ def _method(method):
 # ---------------------------------------------------------------------------- inputs
 def _parameters(ts, where: str) -> np.ndarray:
     """Float64 parameters, each equal to the given number exactly (never rounded here)."""
-    arr = np.asarray(ts)
+    try:
+        arr = np.asarray(ts)
+    except ValueError:  # ragged nesting such as [0, [[]]]
+        raise InputError(f"{where}: expected a 1-d sequence of parameters, got {short_repr(ts)}") from None
     if arr.ndim > 1:
         raise InputError(f"{where}: expected a 1-d sequence of parameters, got shape {arr.shape}")
     arr = np.atleast_1d(arr)
