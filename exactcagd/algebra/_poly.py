@@ -18,6 +18,7 @@ graded reverse lexicographic order with ``x > y`` is positive.
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import lru_cache
 
 import flint
 import numpy as np
@@ -142,11 +143,31 @@ def curve_power(curve) -> tuple[flint.fmpz_poly, flint.fmpz_poly, flint.fmpz_pol
     limits.check("max_implicit_degree", curve.degree, f"implicit algebra of a degree-{curve.degree} curve (implicit degree up to {curve.degree})")
     hom = curve.homogeneous()
     n = hom.shape[0] - 1
-    # Bernstein -> power basis in flint directly (one Taylor shift per column, notes 3.3),
-    # without the mpq round trip of bernstein.to_power (66 -> 38 us for a cubic)
-    comps = [bz.scaled_to_power(flint.fmpq_poly([to_fmpq(c) * bz.binomial(n, i) for i, c in enumerate(hom[:, j])]), n)
-             for j in range(3)]
-    return tuple(primitive_fmpz_polys(comps))
+    # Bernstein -> power basis over Z in one flint matrix product (notes 3.3:
+    # t^k coefficient = sum_i C(n,i) C(n-i,k-i) (-1)^(k-i) c_i) on the integer
+    # coefficients over one common denominator, then the joint content (40 -> 11 us, cubic)
+    rows = hom.tolist()
+    den = 1
+    for row in rows:
+        for v in row:
+            d = int(v.denominator)
+            if d != 1:
+                den = den * d // _gcd(den, d)
+    power = _bernstein_to_power_z(n) * flint.fmpz_mat([[int(v * den) for v in row] for row in rows])
+    comps = [flint.fmpz_poly([power[k, j] for k in range(n + 1)]) for j in range(3)]
+    g = 0
+    for p in comps:
+        g = _gcd(g, int(p.content()))
+    if g > 1:
+        comps = [p // g for p in comps]
+    return tuple(comps)
+
+
+@lru_cache(maxsize=64)
+def _bernstein_to_power_z(n: int) -> flint.fmpz_mat:
+    """The integer matrix taking Bernstein coefficients of degree ``n`` to power coefficients."""
+    return flint.fmpz_mat([[bz.binomial(n, i) * bz.binomial(n - i, k - i) * (-1) ** (k - i) if k >= i else 0 for i in range(n + 1)]
+                           for k in range(n + 1)])
 
 
 def common_factor(X, Y, W) -> tuple[flint.fmpz_poly, tuple]:
@@ -207,14 +228,15 @@ def mpoly_to_sympy(p, gens) -> sympy.Poly:
     from sympy.polys.domains import QQ, ZZ
     from sympy.polys.polyclasses import DMP
 
-    fractions = {
-        tuple(int(e) for e in mono): (int(c.p), int(c.q)) if isinstance(c, flint.fmpq) else (int(c), 1)
-        for mono, c in p.to_dict().items()
-    }
-    if all(q == 1 for _, q in fractions.values()):
-        rep, domain = {m: ZZ(n) for m, (n, _) in fractions.items()}, ZZ
+    monoms = [tuple(int(e) for e in m) for m in p.monoms()]
+    coeffs = p.coeffs()
+    if isinstance(p, flint.fmpz_mpoly):
+        # sympy's ZZ is flint's fmpz under the flint ground type: the coefficients as they are
+        rep, domain = dict(zip(monoms, coeffs if ZZ.dtype is flint.fmpz else [ZZ(int(c)) for c in coeffs])), ZZ
+    elif all(c.q == 1 for c in coeffs):
+        rep, domain = {m: ZZ(int(c.p)) for m, c in zip(monoms, coeffs)}, ZZ
     else:
-        rep, domain = {m: QQ(n, q) for m, (n, q) in fractions.items()}, QQ
+        rep, domain = {m: QQ(int(c.p), int(c.q)) for m, c in zip(monoms, coeffs)}, QQ
     return sympy.Poly.new(DMP.from_dict(rep, len(gens) - 1, domain), *gens)
 
 

@@ -32,7 +32,7 @@ x**2 - 2*x + y
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import flint
 import sympy
@@ -64,7 +64,8 @@ class ImplicitEquation:
 
     Attributes
     ----------
-    poly : sympy.Poly in ``x, y`` (integer, primitive, grevlex-positive)
+    poly : sympy.Poly in ``x, y`` (integer, primitive, grevlex-positive), built from
+        ``mpoly`` on first access (the conversion costs more than flint's resultant of a cubic)
     mpoly : the same as a python-flint ``fmpz_mpoly``
     degree : total degree of ``poly``
     index : ``r``: the resultant was ``c * poly^r`` (``r = 1``: proper parametrization)
@@ -72,12 +73,18 @@ class ImplicitEquation:
     curve_degree : degree of the reduced parametrization
     """
 
-    poly: sympy.Poly
     mpoly: object
     degree: int
     index: int
     base_factor: object
     curve_degree: int
+    _poly: sympy.Poly | None = field(default=None, repr=False, compare=False)
+
+    @property
+    def poly(self) -> sympy.Poly:
+        if self._poly is None:
+            self._poly = mpoly_to_sympy(self.mpoly, (X_SYM, Y_SYM))
+        return self._poly
 
     @property
     def proper(self) -> bool:
@@ -115,14 +122,13 @@ _XYT = zctx(("x", "y", "_t_"), "lex")
 
 def _flint_resultant_xy(X, Y, W):
     """``Res_t(W x - X, W y - Y)`` built directly in ``Z[x, y, t]`` (lex) for python-flint's
-    resultant, then read back into ``Z[x, y]``: the route of ``resultant_coeffs(..., "flint")``
+    resultant, then projected to ``Z[x, y]``: the route of ``resultant_coeffs(..., "flint")``
     without lifting coefficient lists from ``Z[x, y]`` term by term."""
-    n = max(p.degree() for p in (X, Y, W))
-    cx, cy, cw = (_padded(p, n) for p in (X, Y, W))
-    a = {(1, 0, k): cw[k] for k in range(n + 1) if cw[k]} | {(0, 0, k): -cx[k] for k in range(n + 1) if cx[k]}
-    b = {(0, 1, k): cw[k] for k in range(n + 1) if cw[k]} | {(0, 0, k): -cy[k] for k in range(n + 1) if cy[k]}
-    r = _XYT.from_dict(a).resultant(_XYT.from_dict(b), "_t_")
-    return XY.from_dict({(m[0], m[1]): v for m, v in r.to_dict().items()})
+    a = {(1, 0, k): v for k, v in enumerate(W.coeffs()) if v}
+    a.update({(0, 0, k): -v for k, v in enumerate(X.coeffs()) if v})
+    b = {(0, 1, k): v for k, v in enumerate(W.coeffs()) if v}
+    b.update({(0, 0, k): -v for k, v in enumerate(Y.coeffs()) if v})
+    return _XYT.from_dict(a).resultant(_XYT.from_dict(b), "_t_").project_to_context(XY)
 
 
 def _xy_coeff_lists(X, Y, W) -> tuple[list, list]:
@@ -145,13 +151,11 @@ def implicit_resultant(X, Y, W, via: str = "flint"):
     ``via``: ``"flint"`` (subresultants), ``"sylvester"`` or ``"bezout"`` (Bareiss
     on the power-form matrices of 17.3).
     """
-    a, b = _xy_coeff_lists(X, Y, W)
-    if via == "flint":
-        # flint needs both lists non-constant in t; a constant list means a line x = c
-        if len(a) == 1 or len(b) == 1:
-            return resultant_coeffs(a, b, "sylvester")
+    # flint needs both W x - X and W y - Y non-constant in t (else the curve is a line x = c)
+    if via == "flint" and max(W.degree(), X.degree()) > 0 and max(W.degree(), Y.degree()) > 0:
         return _flint_resultant_xy(X, Y, W)
-    return resultant_coeffs(a, b, via)
+    a, b = _xy_coeff_lists(X, Y, W)
+    return resultant_coeffs(a, b, "sylvester" if via == "flint" else via)
 
 
 def _bernstein_xy_lists(X, Y, W) -> tuple[list, list]:
@@ -251,7 +255,7 @@ def _finish(R, g, n: int) -> ImplicitEquation:
             ImproperParametrizationWarning,
             stacklevel=3,
         )
-    return ImplicitEquation(mpoly_to_sympy(F, (X_SYM, Y_SYM)), F, int(F.total_degree()), r, g, n)
+    return ImplicitEquation(F, int(F.total_degree()), r, g, n)
 
 
 def implicit_equation(curve, method: str = "resultant", strict: bool = False) -> ImplicitEquation:
