@@ -25,14 +25,23 @@ from .geometry.bezier_surface import BezierSurface
 from .geometry.bspline import BSplineCurve, BSplineSurface
 from .numeric.sampling import parameter_domain, sample_curve, sample_surface
 
-__all__ = ["plot", "axes_for"]
+__all__ = ["plot", "axes_for", "pyplot"]
 
 
-def _pyplot():
+def pyplot(headless: bool = False):
+    """``matplotlib.pyplot``, or a clear error naming the ``plots`` extra when it is missing.
+
+    The one place exactcagd imports matplotlib (pictures, conformance plots, ``.plot()``);
+    ``headless=True`` selects the Agg backend first, for code that only writes files.
+    """
     try:
+        import matplotlib
+
+        if headless:
+            matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError as exc:  # pragma: no cover - depends on the installation
-        raise NotSupportedError("plots need matplotlib: pip install 'exactcagd[plots]'") from exc
+        raise NotSupportedError("plots need matplotlib, an optional extra: pip install 'exactcagd[plots]'") from exc
     return plt
 
 
@@ -40,7 +49,7 @@ def axes_for(dimension: int, ax=None):
     """``ax`` if given, else new axes: 3-D with labelled x, y, z for ``dimension == 3``."""
     if ax is not None:
         return ax
-    plt = _pyplot()
+    plt = pyplot()
     fig = plt.figure(figsize=(5.5, 4.5))
     if dimension == 3:
         ax = fig.add_subplot(projection="3d")

@@ -798,11 +798,9 @@ def _merge_fields(r: dict, which: str) -> dict:
 
 def plot_errors(report: dict, path: Path) -> None:
     """``errors.png``: per kind, max / p99 / median scaled ulps (log scale) and failure counts."""
-    import matplotlib
+    from ..plotting import pyplot
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot(headless=True)
     with np.errstate(all="ignore"):  # log axes of values up to 1e300 overflow inside matplotlib's transforms
         _plot(report, path, plt)
 

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import NotSupportedError
 from ..exact.scalars import to_rational
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
@@ -26,15 +25,9 @@ __all__ = ["draw", "close"]
 
 
 def _figure(error_panel: bool = False):
-    try:
-        import matplotlib
-    except ModuleNotFoundError:
-        raise NotSupportedError(
-            "pictures need matplotlib, an optional extra: pip install 'exactcagd[plots]'"
-        ) from None
+    from ..plotting import pyplot
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot(headless=True)
 
     columns = 3 if error_panel else 2
     fig = plt.figure(figsize=(6 * columns, 7.3), layout="constrained")
