@@ -85,6 +85,9 @@ def check_inside(hom: np.ndarray, box=((0, 1), (0, 1)), what: str = "domain curv
     function ``W`` is positive on [0, 1] (check it first with :func:`check_weight_function`).
     The test is exact (see the module docstring).
     """
+    (ulo, uhi), (vlo, vhi) = ((mpq(a), mpq(b)) for a, b in box)
+    if all(ulo * w <= x <= uhi * w and vlo * w <= y <= vhi * w for x, y, w in hom.tolist()):
+        return  # the four polynomials below have only >= 0 Bernstein coefficients (no array arithmetic)
     w = hom[:, 2]
     for axis, name in ((0, "u"), (1, "v")):
         lo, hi = (mpq(x) for x in box[axis])

@@ -49,17 +49,26 @@ _MPQ = type(mpq(0))
 
 def scaled(c) -> flint.fmpq_poly:
     """Scaled Bernstein form of a 1-D coefficient sequence: ``sum C(n,i) c_i x^i``."""
-    n = len(c) - 1
-    return flint.fmpq_poly([_fmpq(x) * bz.binomial(n, i) for i, x in enumerate(c)])
+    binomials = _binomials(len(c) - 1)
+    return flint.fmpq_poly([_fmpq_of(x) * binomials[i] for i, x in enumerate(c)])
+
+
+def _fmpq_of(x) -> flint.fmpq:
+    """``x`` as ``fmpq``; ``mpq`` (the stored type of every exact array) without dispatch."""
+    return flint.fmpq(int(x.numerator), int(x.denominator)) if type(x) is _MPQ else _fmpq(x)
 
 
 def unscaled(p: flint.fmpq_poly, n: int) -> list:
     """Bernstein coefficients (``mpq``) of degree ``n`` from the scaled form ``p``."""
-    coeffs = p.coeffs()
+    # p = numer / den with an integer numerator: b_i = numer_i / (den C(n, i)), one
+    # canonicalizing mpq constructor per coefficient (no fmpq -> p, q attribute round trip)
+    den = int(p.denom())
+    coeffs = p.numer().coeffs()
     binomials = _binomials(n)
-    zero = mpq(0)
-    # mpq(p, q C(n, i)) is canonicalized by gmpy2: one conversion, no separate division
-    return [mpq(int(coeffs[i].p), int(coeffs[i].q) * binomials[i]) if i < len(coeffs) else zero for i in range(n + 1)]
+    out = [mpq(int(a), den * b) for a, b in zip(coeffs, binomials)]
+    if len(out) < n + 1:
+        out += [mpq(0)] * (n + 1 - len(out))
+    return out
 
 
 @lru_cache(maxsize=256)
@@ -96,8 +105,8 @@ def _flint_route(net: np.ndarray, curve: np.ndarray) -> np.ndarray:
             g = flint.fmpq_poly([])
             for i in range(l + 1):
                 h = net[i, j, k]
-                if h != 0:
-                    g += b[i] * (flint.fmpq(int(h.numerator), int(h.denominator)) if type(h) is _MPQ else _fmpq(h))
+                if h:
+                    g += b[i] * _fmpq_of(h)
             if not g.is_zero():
                 total += g * c[j]
         result[:, k] = unscaled(total, out_degree)
