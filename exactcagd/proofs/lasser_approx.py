@@ -42,7 +42,10 @@ def eq20():
             assert sympy.simplify(cross) == 0
         # the end derivatives: X'(0) = 3 l1 (B1 - B0), F'(0) = n w1/w0 (B1 - B0)
         assert sympy.simplify(dF.subs(t, 0) - n * w[1] / w[0] * (B[1] - B[0])) == sympy.zeros(2, 1)
-    return verified("symbolic rational F of degree rN in {2, 4, 5}: X and F share end points, and X'(0), X'(1) are parallel to F'(0), F'(1) for all lambda (G1)")
+    return verified("symbolic rational F of degree rN in {2, 4, 5}: X and F share end points, and X'(0), X'(1) are parallel to F'(0), F'(1) for all lambda (G1)",
+        compared="printed (19)-(20) control points b0..b3 vs sympy: X(t) - F(t) at t = 0, 1 and the cross products X'(end) x F'(end) of the symbolic cubic and a symbolic rational F of degree rN in {2, 4, 5}, simplified to 0 for all lambda1, lambda2",
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="VIII", ref="(21), (22)", statement="d = sum_l [D_l - l1 (B1 - B0) B^3_1(t_l) - l2 (B_rN-1 - B_rN) B^3_2(t_l)]^2 with D_l = P_l - B0 (B^3_0 + B^3_1) - B_rN (B^3_2 + B^3_3)")
@@ -70,7 +73,9 @@ def eq21_22():
     assert sympy.expand(H - 2 * G) == sympy.zeros(2, 2)
     return verified(
         "symbolic points P_l, B, parameters t_l (L = 4, planar): (21) with (22) equals sum |P_l - X(t_l)|^2 after "
-        "substituting (20); its Hessian in (lambda1, lambda2) is twice a Gram matrix, so the normal equations give the minimum"
+        "substituting (20); its Hessian in (lambda1, lambda2) is twice a Gram matrix, so the normal equations give the minimum",
+        compared='printed (21) with D_l of (22) vs sympy expansion of sum_l |P_l - X(t_l)|^2 with (20) substituted (symbolic P_l, B, t_l, L = 4); its Hessian vs twice the Gram matrix',
+        reference='sympy',
     )
 
 

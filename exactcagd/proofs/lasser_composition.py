@@ -9,6 +9,7 @@ and an independent sympy-Poly substitution on random exact instances.
 from __future__ import annotations
 
 import itertools
+import math
 import random
 from fractions import Fraction as Fr
 
@@ -19,7 +20,6 @@ from gmpy2 import mpq
 from exactcagd import BezierCurve, BezierSurface
 from exactcagd.composition import compose
 from exactcagd.composition.lasser import compose_homogeneous_lasser, lasser_constant, polar_value, trace_theorem1
-from exactcagd.exact import bernstein as bz
 from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, not_checkable, reconstructed, verified, verified_range
 
@@ -138,7 +138,10 @@ def _trace1():
 def theorem1_symbolic():
     cases = [(1, 1, 1), (2, 1, 1), (1, 2, 1), (1, 1, 2), (2, 1, 2), (2, 2, 1)]
     _theorem1_symbolic(cases)
-    return verified(f"symbolic control points F_ij, u_I, v_I; (l, m, N) in {cases}: formula == expand(F(u(t), v(t)))")
+    return verified(f"symbolic control points F_ij, u_I, v_I; (l, m, N) in {cases}: formula == expand(F(u(t), v(t)))",
+        compared='printed (5)-(7) (compose_homogeneous_lasser on symbolic control points) vs sympy expansion of the substitution F(u(t), v(t)) monomial by monomial (direct_homogeneous), equal as polynomials in t',
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="III", ref="Theorem 1 (range)", statement="Theorem 1 for l, m, N <= 2 on random exact instances")
@@ -147,7 +150,10 @@ def theorem1_range_small():
     for l, m, N in itertools.product(range(3), range(3), range(1, 3)):
         if l + m:
             check_instance(*random_instance(rng, l, m, N, False, False))
-    return verified_range("l, m <= 2, 1 <= N <= 2", "route (a) == route (b) == sympy-Poly substitution, stored degree N(l+m)")
+    return verified_range("l, m <= 2, 1 <= N <= 2", "route (a) == route (b) == sympy-Poly substitution, stored degree N(l+m)",
+        compared="Theorem-1 control points (route (a) by (6)-(7), also route (b)) vs an independent sympy-Poly substitution of K(t) into F's power form over QQ, compared cross-multiplied as polynomials in t",
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="III", ref="Theorem 1 (range)", statement="Theorem 1 for l, m, N <= 4 on random exact instances", slow=True)
@@ -156,7 +162,10 @@ def theorem1_range():
     for l, m, N in itertools.product(range(5), range(5), range(1, 5)):
         if l + m:
             check_instance(*random_instance(rng, l, m, N, False, False))
-    return verified_range("l, m <= 4, 1 <= N <= 4 (one random exact instance each)", "route (a) == route (b) == substitution")
+    return verified_range("l, m <= 4, 1 <= N <= 4 (one random exact instance each)", "route (a) == route (b) == substitution",
+        compared='Theorem-1 control points (routes (a) and (b)) vs sympy-Poly substitution of K(t) into F over QQ, as polynomials in t',
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="III", ref="(7)", statement="sum over |I| = R of C^{l,m}_R(N, I) = 1 (the B_R are affine combinations)")
@@ -166,10 +175,13 @@ def constants_partition_of_unity():
         # generating function: sum_{I} prod C(N, I_Q) x^{|I|} = (1 + x)^{N r}
         gen = [1]
         for _ in range(r):
-            gen = [sum(gen[k - i] * bz.binomial(N, i) for i in range(N + 1) if 0 <= k - i < len(gen)) for k in range(len(gen) + N)]
-        assert all(gen[R] == bz.binomial(r * N, R) for R in range(r * N + 1))
+            gen = [sum(gen[k - i] * math.comb(N, i) for i in range(N + 1) if 0 <= k - i < len(gen)) for k in range(len(gen) + N)]
+        assert all(gen[R] == math.comb(r * N, R) for R in range(r * N + 1))
     assert lasser_constant(2, 1, 2, (1, 2), (0,)) == Fr(2 * 1 * 1, 20)
-    return verified_range("l, m <= 4, N <= 4", "Vandermonde: sum_{|I|=R} prod C(N, I_Q) = C(rN, R), so (7) sums to 1")
+    return verified_range("l, m <= 4, N <= 4", "Vandermonde: sum_{|I|=R} prod C(N, I_Q) = C(rN, R), so (7) sums to 1",
+        compared='printed (7) constants prod C(N, I_Q) / C(rN, R) summed over |I| = R vs 1: the generating function (1 + x)^(N r) expanded by exact integer convolution (math.comb), coefficient by coefficient against C(rN, R); lasser_constant(2, 1, 2, (1, 2), (0,)) vs (7) evaluated by hand (2 * 1 * 1 / 20)',
+        reference='exact',
+    )
 
 
 @claim(doc="lasser", section="III", ref="polar form recursion after (7)", statement="F^{i+a,j+b}_{i,j} = (1 - u_{I_u^u}) F^{...-1} + u_{I_u^u} F_{i+1,j}^{...}; v direction with v_{I_1^u}, ...")
@@ -220,7 +232,9 @@ def theorem2_symbolic():
     return verified(
         f"symbolic weights omega_ij, beta_I, points F_ij, u_I, v_I; (l, m, N) in {cases}: "
         "(Omega_R B_R, Omega_R) are the Bernstein coefficients of W^(l+m) (wF, w)(X/W, Y/W); the factor W^(l+m) "
-        "cancels between numerator and denominator, so the degree is rN, not 2rN"
+        "cancels between numerator and denominator, so the degree is rN, not 2rN",
+        compared='printed (13)-(16) (compose_homogeneous_lasser with symbolic weights) vs sympy expansion of W^(l+m) (wF, w)(X/W, Y/W) by monomial substitution, component by component',
+        reference='sympy',
     )
 
 
@@ -231,7 +245,10 @@ def theorem2_range_small():
         if l + m:
             for rs, rc in ((True, False), (False, True), (True, True)):
                 check_instance(*random_instance(rng, l, m, N, rs, rc))
-    return verified_range("l, m <= 2, 1 <= N <= 2, (rational F) x (rational K)", "route (a) == route (b) == substitution")
+    return verified_range("l, m <= 2, 1 <= N <= 2, (rational F) x (rational K)", "route (a) == route (b) == substitution",
+        compared='Theorem-2 homogeneous control points (routes (a) and (b)) vs sympy-Poly substitution of the rational K(t) into the rational F over QQ, cross-multiplied',
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="V", ref="Theorem 2 (range)", statement="Theorem 2 for l, m, N <= 4", slow=True)
@@ -244,6 +261,8 @@ def theorem2_range():
     return verified_range(
         "l, m <= 4, 1 <= N <= 4 (one random exact instance each, cycling rational F / rational K / both)",
         "route (a) == route (b) == substitution",
+        compared='Theorem-2 homogeneous control points (routes (a) and (b)) vs sympy-Poly substitution over QQ, cross-multiplied',
+        reference='sympy',
     )
 
 
@@ -283,7 +302,10 @@ def footnote_triangles():
         a0, a1, b0, b1 = sympy.symbols("a0 a1 b0 b1")
         line = sympy.Poly(sympy.expand(f.subs({U: a0 + a1 * T, V: b0 + b1 * T}, simultaneous=True)), T)
         assert line.degree() == n
-    return verified("total degree n is preserved under an affine substitution (u, v) = (a0 + a1 t, b0 + b1 t); symbolic, n <= 4")
+    return verified("total degree n is preserved under an affine substitution (u, v) = (a0 + a1 t, b0 + b1 t); symbolic, n <= 4",
+        compared='footnote 1 (degree n preserved on lines) vs sympy: Poly degree in t of a symbolic total-degree-n polynomial after the affine substitution (u, v) = (a0 + a1 t, b0 + b1 t)',
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="I", ref="[Elb 92] Table 6.1", statement="Table 6.1 of [Elb 92] listing polynomial degrees of F(K(t)) is erroneous")

@@ -4,6 +4,7 @@ strategy for isoparametric trim curves (sections IV and VI)."""
 from __future__ import annotations
 
 import itertools
+import math
 import random
 from fractions import Fraction as Fr
 
@@ -31,6 +32,14 @@ def _iso_symbolic(l, m, rational=False):
     u0, u1, s = sympy.symbols("u0 u1 s")
     curve = np.array([[u0, s, sympy.Integer(1)], [u1, s, sympy.Integer(1)]], dtype=object)
     return net, curve, (u0, u1, s)
+
+
+def _comb(n, k):
+    return math.comb(n, k) if 0 <= k <= n else 0
+
+
+def _bern(n, i, x):
+    return sympy.binomial(n, i) * x**i * (1 - x) ** (n - i)
 
 
 def _F_a(net, u0, u1, s, a):
@@ -101,27 +110,41 @@ def counting_identity():
 
 @claim(doc="lasser", section="III", ref="(9), (10)", statement="for an isoparametric line F(K(t)) = sum_R B_R B^{l+m}_R(t), B_R = sum_a C(l,a) C(m,R-a)/C(l+m,R) F_a")
 def eq9_10():
+    t = sympy.Symbol("t")
     for l, m in [(1, 1), (2, 1), (2, 2), (3, 2)]:
         net, curve, (u0, u1, s) = _iso_symbolic(l, m)
         general = compose_homogeneous_lasser(net, curve)[:, 0]
         F = [_F_a(net, u0, u1, s, a)[0] for a in range(l + 1)]
-        for R in range(l + m + 1):
-            formula = sum(sympy.Rational(bz.binomial(l, a) * bz.binomial(m, R - a), bz.binomial(l + m, R)) * F[a] for a in range(l + 1))
-            assert sympy.expand(general[R] - formula) == 0
-    return verified("symbolic F_ij, u0, u1, v*; (l, m) in (1,1), (2,1), (2,2), (3,2)")
+        formula = [sum(sympy.Rational(math.comb(l, a) * _comb(m, R - a), math.comb(l + m, R)) * F[a] for a in range(l + 1))
+                   for R in range(l + m + 1)]
+        # independent reference: substitute the v-line (u0 + (u1 - u0) t, v*) into F by sympy
+        line = u0 + (u1 - u0) * t
+        direct = sum(net[i, j, 0] * _bern(l, i, line) * _bern(m, j, s) for i in range(l + 1) for j in range(m + 1))
+        assert sympy.expand(sum(formula[R] * _bern(l + m, R, t) for R in range(l + m + 1)) - direct) == 0
+        assert all(sympy.expand(general[R] - formula[R]) == 0 for R in range(l + m + 1))
+    return verified("symbolic F_ij, u0, u1, v*; (l, m) in (1,1), (2,1), (2,2), (3,2)",
+        compared="printed (9)-(10) (B_R = sum_a C(l,a) C(m,R-a)/C(l+m,R) F_a, F_a by de Casteljau) vs sympy substitution of the symbolic v-line (u0 + (u1 - u0) t, v*) into F, as polynomials in t; also equal to the package's Theorem-1 net",
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="III", ref="(11)", statement="Delta^{l+i} B_R = 0 for i = 1..m, R = 0..m-i")
 def eq11():
     for l, m in [(1, 1), (1, 2), (2, 2), (3, 1), (2, 3)]:
-        net, curve, _ = _iso_symbolic(l, m)
-        B = compose_homogeneous_lasser(net, curve)[:, 0]
+        net, _, (u0, u1, s) = _iso_symbolic(l, m)
+        # B_R as printed in (10), from the de Casteljau values F_a (not the package's Theorem-1 net)
+        F = [_F_a(net, u0, u1, s, a)[0] for a in range(l + 1)]
+        B = [sum(sympy.Rational(math.comb(l, a) * _comb(m, R - a), math.comb(l + m, R)) * F[a] for a in range(l + 1))
+             for R in range(l + m + 1)]
         for i in range(1, m + 1):
             for R in range(m - i + 1):
                 k = l + i
                 diff = sum((-1) ** j * sympy.binomial(k, j) * B[R + k - j] for j in range(k + 1))
                 assert sympy.expand(diff) == 0
-    return verified("symbolic, (l, m) in (1,1), (1,2), (2,2), (3,1), (2,3): the forward differences of order > l vanish")
+    return verified("symbolic, (l, m) in (1,1), (1,2), (2,2), (3,1), (2,3): the forward differences of order > l vanish",
+        compared='printed (11) forward differences Delta^(l+i) B_R of the printed (10) points (sympy, from de Casteljau values F_a) vs 0, expanded symbolically',
+        reference='sympy',
+    )
 
 
 @claim(doc="lasser", section="III", ref="(12)", statement="B_R = sum_{a=R-m, a>0}^{R} C(l,a) C(m,R-a)/C(l+m,R) F_a is the degree raising formula")

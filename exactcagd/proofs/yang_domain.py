@@ -46,4 +46,6 @@ def domain_subdivision():
     return verified_range(
         f"9 x 8 bicubic surface (6 x 5 patches), closed cubic NURBS curve: {pieces} pieces, {irrational} at irrational cuts",
         "every piece is monotonic in u and v (no root of odd multiplicity of the derivative numerators inside the piece, exact isolation) and lies in one patch (end points within 2^-60 of its closed span; irrational cuts are carried by 2^-64 intervals)",
+        compared="section 3/5 claim (each piece rational Bezier, monotonic in u and v, in one patch) vs flint derivatives of each piece's power-form numerators u'w - uw', v'w - vw' with exact real-root isolation on (0, 1) (no odd-multiplicity root), and each piece's end points vs the surface's knot lines",
+        reference='exact',
     )
