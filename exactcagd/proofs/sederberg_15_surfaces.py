@@ -9,6 +9,7 @@ exactcagd the net axis 0 runs with u = s and axis 1 with v = t.
 from __future__ import annotations
 
 import itertools
+from fractions import Fraction
 
 import numpy as np
 import sympy as sp
@@ -18,6 +19,7 @@ from exactcagd import BezierCurve, BezierSurface, BSplineCurve, BSplineSurface
 from exactcagd.exact import bernstein as bz
 from exactcagd.proofs import _ledger as L
 from exactcagd.proofs._ledger import claim, erratum, verified
+from exactcagd.proofs.sederberg_15_nurbs import _ref_point as _cox_de_boor_point
 from exactcagd.proofs._sederberg_common import Rs, rand_pos, rand_q, rng, s_, t_
 
 DOC = "sederberg"
@@ -49,7 +51,9 @@ def surface_equation():
     ref = _surface_exprs(net, w)
     for a, b in [(0, 0), (mpq(1, 3), mpq(3, 4)), (1, mpq(1, 2)), (mpq(5, 7), 1)]:
         assert tuple(Rs(x) for x in surf.evaluate(a, b)) == tuple(e.subs({s_: Rs(a), t_: Rs(b)}) for e in ref)
-    return verified("rational 2 x 3 patch: exact tensor de Casteljau == printed quotient (sympy) at 4 parameter pairs")
+    return verified("rational 2 x 3 patch: exact tensor de Casteljau == printed quotient (sympy) at 4 parameter pairs",
+        compared="printed (15.2) quotient expanded in sympy vs exactcagd's tensor de Casteljau at 4 parameter pairs",
+        reference='sympy')
 
 
 @claim(DOC, "15.1", "(15.3), (15.4)", "bicubic blending functions laid out like the control points: entry of P_ij is B_i^3(s) B_j^3(t)", covers=["(15.1)"])
@@ -65,9 +69,12 @@ def bicubic_blending_layout():
         net = [[[int((a, b) == (i, j))] for b in range(4)] for a in range(4)]
         surf = BezierSurface(net)
         expr = printed_rows[3 - j][i]
+        assert sp.expand(expr - sp.binomial(3, i) * s_**i * (1 - s_) ** (3 - i) * sp.binomial(3, j) * t_**j * (1 - t_) ** (3 - j)) == 0
         for a, b in [(mpq(1, 3), mpq(2, 5)), (mpq(3, 4), mpq(1, 7))]:
             assert Rs(surf.evaluate(a, b)[0]) == expr.subs({s_: Rs(a), t_: Rs(b)})
-    return verified("each P_ij's blending function (unit net, exactcagd) equals the printed entry at the (15.3) position")
+    return verified("each P_ij's blending function (unit net, exactcagd) equals the printed entry at the (15.3) position",
+        compared="printed (15.4) entries at their (15.3) positions vs sympy B_i^3(s) B_j^3(t) identically, and vs exactcagd's unit-net evaluation",
+        reference='sympy')
 
 
 @claim(DOC, "15.1", "(15.5)", "P(c, t) = sum_j Q_j(c) B_j^n(t), Q_j(c) = sum_i P_ij B_i^m(c); corners P(0,0) = P_00, P(1,0) = P_m0, P(0,1) = P_0n, P(1,1) = P_mn")
@@ -79,13 +86,17 @@ def iso_curves_and_corners():
         iso = surf.iso_u(c)
         beads = [BezierCurve([net[i][j] for i in range(3)]).evaluate(c) for j in range(4)]
         assert iso.control_points == tuple(beads)
+        ref = _surface_exprs(net)
         for k in range(5):
             assert iso.evaluate(mpq(k, 4)) == surf.evaluate(c, mpq(k, 4))
+            assert tuple(Rs(x) for x in iso.evaluate(mpq(k, 4))) == tuple(e.subs({s_: Rs(c), t_: sp.Rational(k, 4)}) for e in ref)
     rat = BezierSurface(net, w)
     corners = {(0, 0): net[0][0], (1, 0): net[2][0], (0, 1): net[0][3], (1, 1): net[2][3]}
     for (a, b), p in corners.items():
         assert surf.evaluate(a, b) == rat.evaluate(a, b) == tuple(mpq(x) for x in p)
-    return verified("iso-parameter curves' control points are the beads Q_j(c) (exact); the corners are interpolated (polynomial and rational)")
+    return verified("iso-parameter curves' control points are the beads Q_j(c) (exact); the corners are interpolated (polynomial and rational)",
+        compared="printed (15.5) beads Q_j(c) vs exactcagd's iso-curve control points; the iso-curve vs sympy (15.2) at s = c; printed corners vs the control points",
+        reference='sympy')
 
 
 @claim(DOC, "15.1", "control curves", "the i-th s-control curve is defined by P_ij, j = 0..n; there are m+1 s-control curves; "
@@ -185,7 +196,9 @@ def surface_subdivision_and_elevation():
     ref = _surface_exprs(net, w)
     for a, b in [(mpq(1, 3), mpq(2, 7)), (mpq(4, 5), mpq(1, 2)), (mpq(1), mpq(1, 9))]:
         assert tuple(Rs(x) for x in e.evaluate(a, b)) == tuple(x.subs({s_: Rs(a), t_: Rs(b)}) for x in ref)
-    return verified("rational 3 x 2 patch: subdividing every column curve == surface subdivision; the (1, 2)-elevated patch agrees with the printed quotient (sympy) at 3 points")
+    return verified("rational 3 x 2 patch: subdividing every column curve == surface subdivision; the (1, 2)-elevated patch agrees with the printed quotient (sympy) at 3 points",
+        compared="printed rule (subdivide / elevate each control curve) vs exactcagd's surface subdivision and elevation; the elevated patch vs sympy (15.2) at 3 points",
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 15.6 NURBS surfaces
@@ -213,4 +226,9 @@ def nurbs_surface_splitting():
     refined = surf.insert_knot_v(mpq(7, 2)).insert_knot_u(2)
     for u, v in [(mpq(1, 2), mpq(1)), (mpq(2), mpq(4)), (mpq(3), mpq(5)), (mpq(5, 2), mpq(7, 2))]:
         assert refined.evaluate(u, v) == surf.evaluate(u, v)
-    return verified("rational bicubic x biquadratic NURBS: exactcagd's patches == splitting the homogeneous control curves by hand; knot insertion exact")
+        F = lambda x: Fraction(int(mpq(x).numerator), int(mpq(x).denominator))  # noqa: E731
+        cox_de_boor = _cox_de_boor_point([[[F(x) for x in p] for p in row] for row in net], [[F(x) for x in row] for row in w], [Fraction(k) for k in ku], [Fraction(k) for k in kv], 3, 2, Fraction(int(u.numerator), int(u.denominator)), Fraction(int(v.numerator), int(v.denominator)))
+        assert tuple(Fraction(int(x.numerator), int(x.denominator)) for x in refined.evaluate(u, v)) == cox_de_boor
+    return verified("rational bicubic x biquadratic NURBS: exactcagd's patches == splitting the homogeneous control curves by hand; knot insertion exact",
+        compared="printed 15.6 rule (split each s-control curve, then each t-control curve) vs exactcagd's to_bezier_patches; the knot-refined surface vs an independent Cox-de Boor evaluation on Fractions",
+        reference='independent-algorithm')
