@@ -42,6 +42,19 @@ def _root_product(f_roots, g_roots):
     return out
 
 
+def _sylvester_sympy(a, b):
+    """Sylvester's matrix of sum a_i t^i, sum b_j t^j (coefficients low to high) written out in sympy; det = Res(f, g)."""
+    m, n = len(a) - 1, len(b) - 1
+    S = sp.zeros(m + n, m + n)
+    for r in range(n):
+        for k, c in enumerate(reversed(a)):
+            S[r, r + k] = c
+    for r in range(m):
+        for k, c in enumerate(reversed(b)):
+            S[n + r, r + k] = c
+    return S
+
+
 def _bez(f, g):
     """The notes' bracket matrix (a_i b_j) built with sympy from the formula of 17.3.4."""
     a = sp.Poly(f, t).all_coeffs()[::-1]
@@ -62,7 +75,9 @@ def brute_force_line():
     assert sp.expand((X - 2) - t) == 0 and sp.expand((Y - 1) / 3 - t) == 0
     c = curve_from_polynomials(X, Y)
     assert implicitize(c).as_expr() == 3 * x - y - 5
-    return verified("substitution (sympy) and implicitize()")
+    return verified("substitution (sympy) and implicitize()",
+        compared='printed 3x - y - 5 = 0 and t = x - 2 = (y - 1)/3 vs sympy substitution of x = t + 2, y = 3t + 1',
+        reference='sympy')
 
 
 @claim(DOC, "17.2", "parabola", "x = t^2 + 1, y = t^2 + 2t - 2: x^2 - 2xy + y^2 - 10x + 6y + 13 = 0")
@@ -73,7 +88,9 @@ def brute_force_parabola():
     # the squaring step: (y - (x - 1) + 2)^2 = 4 (x - 1)
     assert sp.expand((y - (x - 1) + 2) ** 2 - 4 * (x - 1) - printed) == 0
     assert implicitize(curve_from_polynomials(X, Y)).as_expr() == printed
-    return verified("vanishes on the parametrization; equals the squared form and implicitize()")
+    return verified("vanishes on the parametrization; equals the squared form and implicitize()",
+        compared='printed x^2 - 2xy + y^2 - 10x + 6y + 13 vs sympy substitution of the parametrization and expansion of the squared form (y - (x-1) + 2)^2 = 4(x-1)',
+        reference='sympy')
 
 
 @claim(DOC, "17.2", "inversion (5,-2)", "x = 5 gives t = +-2, y = -2 gives t = -2 or 0; so t = -2")
@@ -81,7 +98,9 @@ def brute_force_inversion_point():
     sx = set(sp.solve(t**2 + 1 - 5, t))
     sy = set(sp.solve(t**2 + 2 * t - 2 + 2, t))
     assert sx == {2, -2} and sy == {-2, 0} and sx & sy == {-2}
-    return verified("root sets as printed; intersection {-2}")
+    return verified("root sets as printed; intersection {-2}",
+        compared='printed root sets {+-2}, {-2, 0} and t = -2 vs sympy.solve of x(t) = 5, y(t) = -2',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 17.3
@@ -91,7 +110,9 @@ def resultant_root_product():
     f = t**2 - 7 * t + 12
     assert resultant(f, t**2 - 3 * t + 2, t) == 12
     assert resultant(f, t**2 - 5 * t + 6, t) == 0
-    return verified("root-difference products; resultant() (Sylvester) agrees")
+    return verified("root-difference products; resultant() (Sylvester) agrees",
+        compared='printed (17.3) values 12 and 0 vs the root-difference products (17.2) in exact integers',
+        reference='exact')
 
 
 @claim(DOC, "17.3.2", "(17.4)", "R(a1 t + a0, b1 t + b0) = a1 b0 - b1 a0; examples 5 and 0")
@@ -100,7 +121,10 @@ def resultant_linear():
     assert sp.expand(resultant(a1 * t + a0, b1 * t + b0, t) - (a1 * b0 - b1 * a0)) == 0
     assert sp.Matrix([[a1, a0], [b1, b0]]).det() == a1 * b0 - b1 * a0  # (17.5)
     assert resultant(2 * t + 1, t + 3, t) == 5 and resultant(t - 2, 3 * t - 6, t) == 0
-    return verified("symbolic resultant and the determinant of (17.5); both examples")
+    assert sp.Matrix([[2, 1], [1, 3]]).det() == 5 and sp.Matrix([[1, -2], [3, -6]]).det() == 0  # (17.5) of both examples
+    return verified("symbolic resultant and the determinant of (17.5); both examples",
+        compared='printed (17.4) a1 b0 - b1 a0 and the examples 5, 0 vs the sympy determinant of (17.5)',
+        reference='sympy')
 
 
 @claim(DOC, "17.3.2", "common root condition", "common root iff -a0/a1 = b0/b1")
@@ -159,7 +183,9 @@ def degree_two_example():
             f = sp.expand(sp.prod([t - a for a in fr]))
             g = sp.expand(sp.prod([t - b for b in gr]))
             assert _bez(f, g).det() == bezout_sign(n) * _root_product(fr, gr)
-    return verified("printed matrix and -12 reproduced; det(Bezout_n) = (-1)^(n(n-1)/2) prod(f_i - g_j), n = 1..6 random monic")
+    return verified("printed matrix and -12 reproduced; det(Bezout_n) = (-1)^(n(n-1)/2) prod(f_i - g_j), n = 1..6 random monic",
+        compared='printed (17.8) matrix and det -12 vs the bracket matrix built in sympy from the formula of 17.3.4 and its sympy determinant; sign vs root products for n = 1..6',
+        reference='sympy')
 
 
 @claim(DOC, "17.3.4", "cubic Bezout", "h1, h2, h3 of the cubic case and R = det of the 3x3 bracket matrix")
@@ -183,7 +209,9 @@ def degree_three_auxiliary():
         vals[b[3]] = vals[b[3]] or -1
         S = sp.Matrix(sylvester_matrix([vals[v] for v in a], [vals[v] for v in b]))
         assert M.subs(vals).det() == -S.det()  # bezout_sign(3) = -1
-    return verified("h1, h2, h3 expand as printed (symbolic); det(printed 3x3) = -det(Sylvester 6x6) on 10 random integer cubics")
+    return verified("h1, h2, h3 expand as printed (symbolic); det(printed 3x3) = -det(Sylvester 6x6) on 10 random integer cubics",
+        compared='printed h1, h2, h3 and the 3x3 bracket matrix vs sympy expansion of the defining combinations; det vs the sympy determinant of the Sylvester matrix',
+        reference='sympy')
 
 
 def _trace_cubics():
@@ -198,7 +226,9 @@ def degree_three_examples():
     assert M1 == sp.Matrix([[7, -7, 2], [-7, -5, -11], [2, -11, 13]]) and M1.det() == -1611
     assert M2 == sp.Matrix([[-5, 17, 12], [17, -60, -32], [12, -32, -64]]) and M2.det() == 0
     assert resultant(t**3 - 2 * t**2 + 3 * t + 1, 2 * t**3 + 3 * t**2 - t + 4, t) == 1611
-    return verified("both matrices and determinants as printed (the Sylvester resultant is +1611)")
+    return verified("both matrices and determinants as printed (the Sylvester resultant is +1611)",
+        compared='printed 3x3 matrices and determinants -1611, 0 vs the bracket matrices built in sympy from 17.3.4 and their sympy determinants',
+        reference='sympy')
 
 
 @claim(DOC, "17.3.5", "Sylvester", "Sylvester's 2n x 2n resultant is equivalent to Bezout's n x n resultant")
@@ -213,9 +243,18 @@ def sylvester_vs_bezout():
         B = sp.Matrix(bezout_matrix(big, small)).det()
         sign = bezout_sign(max(m, n)) * ((-1) ** (m * n) if m < n else 1)
         assert B == sign * S
-        # independent: Res = a_m^n prod g(alpha_i) via the roots of f (sympy, exact algebraic)
+        # independent: Sylvester's matrix written out in sympy (its determinant is the root product (17.2), checked below)
+        assert sp.Matrix(sylvester_matrix(a, b)) == _sylvester_sympy(a, b)
+        assert B == sign * _sylvester_sympy(a, b).det()
         count += 1
-    return verified_range("degrees 1..5 x 1..5, random integer coefficients", f"{count} pairs: det(hybrid Bezout) = +-det(Sylvester) with the stated sign")
+    for m, n in itertools.product(range(1, 5), repeat=2):  # det of the sympy Sylvester matrix = prod (f_i - g_j) for monic f, g
+        fr, gr = [r.randint(-4, 4) for _ in range(m)], [r.randint(-4, 4) for _ in range(n)]
+        a = sp.Poly(sp.prod([t - c for c in fr]), t).all_coeffs()[::-1]
+        b = sp.Poly(sp.prod([t - c for c in gr]), t).all_coeffs()[::-1]
+        assert _sylvester_sympy(a, b).det() == _root_product(fr, gr)
+    return verified_range("degrees 1..5 x 1..5, random integer coefficients", f"{count} pairs: det(hybrid Bezout) = +-det(Sylvester) with the stated sign",
+        compared="printed equivalence of Sylvester and Bezout resultants vs the determinant of Sylvester's matrix written out in sympy (itself checked against root products (17.2))",
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 17.4
@@ -227,7 +266,9 @@ def cramer_example():
     out = common_roots_linear(t**3 - t**2 - 11 * t - 4, 2 * t**3 - 7 * t**2 - 5 * t + 4)
     assert out["root"] == 4 and out["count"] == 1
     assert (t**3 - t**2 - 11 * t - 4).subs(t, 4) == 0 and (2 * t**3 - 7 * t**2 - 5 * t + 4).subs(t, 4) == 0
-    return verified("Cramer's rule gives 4, a common root of both cubics")
+    return verified("Cramer's rule gives 4, a common root of both cubics",
+        compared='printed Cramer quotient t = 4 vs sympy determinants and substitution into both cubics',
+        reference='sympy')
 
 
 def _bareiss_sympy(M):
@@ -265,7 +306,9 @@ def gauss_example_1():
 def gauss_example_2():
     E = _bareiss_sympy([[-5, 17, 12], [17, -60, -32], [12, -32, -64]])
     assert E == sp.Matrix([[-5, 17, 12], [0, 11, -44], [0, 0, 0]])
-    return verified("elimination reproduced; 11 TU - 44 U^2 = 0 gives t = 4")
+    return verified("elimination reproduced; 11 TU - 44 U^2 = 0 gives t = 4",
+        compared='printed echelon form [[-5,17,12],[0,11,-44],[0,0,0]] vs integer-preserving elimination written out in sympy',
+        reference='sympy')
 
 
 @claim(DOC, "17.4", "Gauss example 3", "rank 1: two common roots, gcd -t^2 + 3t - 2, t = 1, 2")
@@ -276,13 +319,17 @@ def gauss_example_3():
     out = common_roots_linear(f, g)
     assert out["count"] == 2 and sp.expand(out["gcd"] - (-t**2 + 3 * t - 2)) == 0
     assert sp.gcd(f, g) == t**2 - 3 * t + 2 and common_root_count(f, g) == 2
-    return verified("matrix, rank 1 and the gcd from the echelon row as printed")
+    return verified("matrix, rank 1 and the gcd from the echelon row as printed",
+        compared='printed rank-1 matrix and gcd -t^2 + 3t - 2 vs the sympy bracket matrix, its rank and sympy.gcd',
+        reference='sympy')
 
 
 @claim(DOC, "17.4", "Euclid (integers)", "42/30 = 1 r 12, 30/12 = 2 r 6, 12/6 = 2: gcd 6")
 def euclid_integers():
     assert divmod(42, 30) == (1, 12) and divmod(30, 12) == (2, 6) and divmod(12, 6) == (2, 0)
-    return verified("three division steps")
+    return verified("three division steps",
+        compared='printed division steps 42 = 1*30 + 12, 30 = 2*12 + 6, 12 = 2*6 vs Python integer divmod',
+        reference='exact')
 
 
 def _div(a, b):
@@ -337,4 +384,6 @@ def euclid_example_3():
     q1, r1 = _div(f, g)
     q2, r2 = _div(g, r1)
     assert q1 == 1 and sp.expand(r1 - (t**2 - 3 * t + 2)) == 0 and sp.expand(q2 - (t - 4)) == 0 and r2 == 0
-    return verified("division steps as printed; common roots 1, 2")
+    return verified("division steps as printed; common roots 1, 2",
+        compared='printed quotients 1, t - 4 and remainders t^2 - 3t + 2, 0 vs sympy polynomial division over QQ',
+        reference='sympy')
