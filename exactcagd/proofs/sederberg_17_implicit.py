@@ -120,7 +120,9 @@ def implicitization_example_1():
     assert implicitize(curve_from_polynomials(X, Y)).as_expr() == sp.expand(-printed)
     for inv in ((-x + y + 3) / 2, (-2 * x + 2) / (x - y - 3)):
         assert sp.simplify(inv.subs({x: X, y: Y}) - t) == 0
-    return verified("matrix, determinant (= -implicitize() under its sign convention) and both inversion formulas (sympy)")
+    return verified("matrix, determinant (= -implicitize() under its sign convention) and both inversion formulas (sympy)",
+        compared='printed 2x2 matrix, its determinant and both inversion formulas vs the bracket matrix built in sympy from 17.3.4, its sympy determinant, and sympy substitution of x = t^2 + 1, y = t^2 + 2t - 2',
+        reference='sympy')
 
 
 _X2 = 2 * t**3 - 18 * t**2 + 18 * t + 4
@@ -155,7 +157,9 @@ def implicitization_example_2():
     assert _vanishes_on_curve(printed_f, curve, 3)
     for method in ("resultant", "bezier", "moving_lines"):
         assert implicitize(curve, method).as_expr() == sp.expand(-printed_f)
-    return verified("matrix entries, expansion, vanishing on the curve; all three routes give -f (sign convention)")
+    return verified("matrix entries, expansion, vanishing on the curve; all three routes give -f (sign convention)",
+        compared='printed 3x3 Bezout matrix and f(x, y) vs the bracket matrix built in sympy from p(x,t), q(y,t), its sympy determinant, and exact vanishing of f on the curve',
+        reference='sympy')
 
 
 @claim(DOC, "17.5", "example 2 inversion", "t = -|117x-6y-636, 39x-2y-154; -69x-2y+494, -66x+6y+258| / |-117x+69y+564, 39x-2y-154; 117x-6y-636, -66x+6y+258|")
@@ -174,6 +178,15 @@ def implicitization_example_2_inversion():
 
 
 # ---------------------------------------------------------------- 17.6
+def _l_printed(curve, i, j):
+    """The notes' l_ij(x, y) = C(n,i) C(n,j) w_i w_j |x y 1; x_i y_i 1; x_j y_j 1| written out in sympy."""
+    n = curve.degree
+    P = [[sp.Rational(str(v)) for v in p] for p in curve.control_points]
+    w = [sp.Rational(str(v)) for v in curve.weights] if curve.weights is not None else [1] * (n + 1)
+    D = sp.Matrix([[x, y, 1], [P[i][0], P[i][1], 1], [P[j][0], P[j][1], 1]]).det()
+    return sp.expand(sp.binomial(n, i) * sp.binomial(n, j) * w[i] * w[j] * D)
+
+
 @claim(DOC, "17.6", "l_ij determinants", "f = |l21 l20; l20 l10| (n = 2), the 3x3 matrix (n = 3), L_ij = sum l_km (general n)")
 def bezier_form_implicit():
     r = random.Random(176)
@@ -182,6 +195,7 @@ def bezier_form_implicit():
         for _ in range(2):
             c = _random_curve(r, n)
             L = l_matrix(c)
+            assert all(sp.expand(L[(i, j)] - _l_printed(c, i, j)) == 0 for i in range(n + 1) for j in range(i))
             lk = lambda k, m: L[(k, m)]  # noqa: E731
             Lij = lambda i, j: sp.expand(sum(lk(i + j + 1 - m, m) for m in range(min(i, j) + 1) if i + j + 1 - m <= n))  # noqa: E731
             M = sp.Matrix(n, n, lambda a, b: Lij(n - 1 - a, n - 1 - b))
@@ -192,9 +206,10 @@ def bezier_form_implicit():
             lin = [[sp.Poly(M[i, j], x, y) for j in range(n)] for i in range(n)]
             at = lambda px, py: _det_fraction([[Fraction(str(e.eval({x: px, y: py}))) for e in row] for row in lin])  # noqa: E731
             # det M vanishes on the curve: det M(P(t_k)) = 0 at n^2 + 1 parameters
+            X, Y, W = _sympy_components(c)
             for k in range(1, n * n + 2):
-                px, py = c.evaluate(sp.Rational(k, n * n + 2))
-                assert at(sp.Rational(str(px)), sp.Rational(str(py))) == 0
+                tk = sp.Rational(k, n * n + 2)
+                assert at(X.subs(t, tk) / W.subs(t, tk), Y.subs(t, tk) / W.subs(t, tk)) == 0
             # det M has degree <= n and is not zero, F is irreducible of degree n: det M = const F
             F = implicitize(c).as_expr()
             p1, p2 = (sp.Rational(1, 7), sp.Rational(-2, 3)), (sp.Rational(5, 3), sp.Rational(1, 11))
@@ -205,7 +220,8 @@ def bezier_form_implicit():
     return verified_range(
         "n = 2..5, two random rational curves each",
         "the printed L_ij matrix: det vanishes on the curve (n^2 + 1 exact parameters, degree bound) and is a non-zero multiple of implicitize()",
-    )
+        compared="printed l_ij (sympy determinant, weights and binomials as printed) vs exactcagd's l_matrix; det of the printed L_ij matrix vs vanishing on the sympy Bernstein parametrization at n^2 + 1 parameters (Fraction elimination) and proportionality to implicitize()",
+        reference='sympy')
 
 
 @claim(DOC, "17.6.1", "(17.10)-(17.11)", "t = l20 / (l20 - l21) = l10 / (l10 - l20) for quadratics")
@@ -214,10 +230,13 @@ def bezier_inversion_quadratic():
     for _ in range(4):
         c = _random_curve(r, 2)
         L = l_matrix(c)
+        assert all(sp.expand(L[(i, j)] - _l_printed(c, i, j)) == 0 for i in range(3) for j in range(i))
         X, Y, W = _sympy_components(c)
         for expr in (L[(2, 0)] / (L[(2, 0)] - L[(2, 1)]), L[(1, 0)] / (L[(1, 0)] - L[(2, 0)])):
             assert sp.simplify(sp.together(expr.subs({x: X / W, y: Y / W}, simultaneous=True)) - t) == 0
-    return verified_range("4 random rational quadratics", "both formulas equal t identically (sympy)")
+    return verified_range("4 random rational quadratics", "both formulas equal t identically (sympy)",
+        compared='printed (17.11) with l_ij from the printed definition vs sympy substitution of the Bernstein parametrization: both quotients equal t identically',
+        reference='sympy')
 
 
 @claim(DOC, "17.6.1", "(17.12)-(17.14)", "with c1, c2 as printed, t = l_b / (l_b - l_a) for rational cubics")
@@ -232,8 +251,21 @@ def bezier_inversion_cubic():
             continue
         assert sp.total_degree(f.num) <= 1 and sp.total_degree(f.den) <= 1
         assert _inverts(f.expr(), c, 1)
+        # the printed c1, c2, l_a, l_b, (17.14) written out in sympy from the l_ij definition: t identically
+        P = [[sp.Rational(str(v)) for v in p] for p in c.control_points]
+        w = [sp.Rational(str(v)) for v in c.weights]
+        D = lambda *idx: sp.Matrix([[P[k][0], P[k][1], 1] for k in idx]).det()  # noqa: E731
+        l_ = lambda i, j: _l_printed(c, i, j)  # noqa: E731
+        c1 = w[0] * D(0, 1, 3) / (3 * w[2] * D(1, 2, 3))
+        c2 = -w[0] * D(0, 2, 3) / (3 * w[1] * D(1, 2, 3))
+        la = c1 * l_(3, 1) + c2 * (l_(3, 0) + l_(2, 1)) + l_(2, 0)
+        lb = c1 * l_(3, 0) + c2 * l_(2, 0) + l_(1, 0)
+        X, Y, W = _sympy_components(c)
+        assert sp.cancel((lb / (lb - la)).subs({x: X / W, y: Y / W}, simultaneous=True) - t) == 0
         done += 1
-    return verified_range("4 random rational cubics", "linear inversion formula (17.14) equals t identically (sympy)")
+    return verified_range("4 random rational cubics", "linear inversion formula (17.14) equals t identically (sympy)",
+        compared="printed c1, c2, l_a, l_b and (17.14) written out in sympy from the l_ij definition vs sympy substitution of the parametrization (t identically); exactcagd's inversion_bezier also inverts exactly",
+        reference='sympy')
 
 
 @claim(DOC, "17.6.1", "example", "P = (1,0),(5,0),(5,2),(4,3): l32 = 3x+3y-21, ..., c1 = 2, c2 = -1, t = 2y/(x+y-1); (1,0) is a double point (t = 0, 2)")
@@ -250,6 +282,7 @@ def bezier_inversion_example():
     }
     for k, v in printed.items():
         assert sp.expand(L[k] - v) == 0, k
+        assert sp.expand(_l_printed(c, *k) - v) == 0, k  # the printed definition of l_ij, written out in sympy
     D = lambda *rows: sp.Matrix([[*p, 1] for p in rows]).det()  # noqa: E731
     c1 = D((1, 0), (5, 0), (4, 3)) / (3 * D((5, 0), (5, 2), (4, 3)))
     c2 = -D((1, 0), (5, 2), (4, 3)) / (3 * D((5, 0), (5, 2), (4, 3)))
@@ -260,7 +293,9 @@ def bezier_inversion_example():
     assert sp.cancel(lb / (lb - la) - 2 * y / (x + y - 1)) == 0
     assert inversion_bezier(c).expr() == 2 * y / (x + y - 1)
     assert c.evaluate(0) == (1, 0) and c.evaluate(2, extrapolate=True) == (1, 0)
-    return verified("every printed value; (1, 0) = P(0) = P(2); 2y/(x+y-1) is 0/0 there")
+    return verified("every printed value; (1, 0) = P(0) = P(2); 2y/(x+y-1) is 0/0 there",
+        compared='printed l_ij values, c1 = 2, c2 = -1 and t = 2y/(x+y-1) vs sympy determinants of the printed control points and cancellation of l_b/(l_b - l_a)',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 17.7
@@ -310,7 +345,9 @@ def inversion_degree():
             except ImproperParametrizationError:
                 pass
         assert _inverts(f.expr(), c, d)
-    return verified_range("n = 2..6, random rational curves", "degree max(1, n-2) suffices and n-3 does not (n >= 4); the formulas equal t identically (exact check at n d + 2 parameters)")
+    return verified_range("n = 2..6, random rational curves", "degree max(1, n-2) suffices and n-3 does not (n >= 4); the formulas equal t identically (exact check at n d + 2 parameters)",
+        compared='printed degree max(1, n-2) of (17.15) vs exact check that the degree-d formula inverts the curve (num(P(t)) = t den(P(t)) at n d + 2 parameters) and that no degree n-3 formula exists (linear system has no solution)',
+        reference='exact')
 
 
 # ---------------------------------------------------------------- 17.8
