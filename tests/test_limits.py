@@ -268,3 +268,32 @@ def test_counts_beyond_2_62_are_a_limit_error_with_a_short_message(value):
     with pytest.raises(LimitError, match="r = ") as info:
         to_count(value, where="r")
     assert len(str(info.value)) < 200
+
+
+# ---------------------------------------------------------------- no silent acceptance of a bad tolerance
+def _tol_calls():
+    from exactcagd.composition import approximate_cubic
+    from exactcagd.curves_on_surfaces import approximate
+    from exactcagd.numeric import bernstein_roots, intersect
+
+    surface = BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+    domain = BezierCurve([["1/4", "1/4"], ["3/4", "3/4"]])
+    a, b = BezierCurve([[0, 0], [1, 1]]), BezierCurve([[0, 1], [1, 0]])
+    return {
+        "approximate": lambda tol: approximate(surface, domain, tol),
+        "approximate_cubic": lambda tol: approximate_cubic(surface, domain, tol),
+        "numeric.intersect": lambda tol: intersect(a, b, tol=tol),
+        "bernstein_roots": lambda tol: bernstein_roots([-1, 0, 1], tol=tol),
+    }
+
+
+_BAD_TOLERANCES = [True, False, b"1e-6", None, "abc", sympy.pi, sympy.Symbol("e"), math.nan, math.inf, -1, 0]
+
+
+@pytest.mark.parametrize("name", ["approximate", "approximate_cubic", "numeric.intersect",
+                                  pytest.param("bernstein_roots", marks=pytest.mark.xfail(reason="numeric/roots.py (intersection work) still does float(tol)", strict=False))])
+def test_bad_tolerances_are_refused_everywhere(name):
+    call = _tol_calls()[name]
+    for tol in _BAD_TOLERANCES:
+        with pytest.raises(ExactCAGDError):
+            call(tol)
