@@ -45,7 +45,10 @@ def eq6_7():
     s = sympy.Rational(1, 2)
     assert sympy.simplify((ALPHA - 1) * s / (2 * ALPHA * s - s - ALPHA) - (1 - ALPHA)) == 0
     assert sympy.simplify(_u_of_v() - _printed_6_7()) == 0
-    return verified("eliminating t from u = 1 - alpha(t), v = M_beta(t) gives exactly (6) with (7) (symbolic in alpha_k, beta); d v^2 + e v + f = ((2 beta - 1) v - (beta - 1))^2")
+    return verified("eliminating t from u = 1 - alpha(t), v = M_beta(t) gives exactly (6) with (7) (symbolic in alpha_k, beta); d v^2 + e v + f = ((2 beta - 1) v - (beta - 1))^2",
+        compared='printed (6) with the coefficients (7) vs sympy elimination of t from u = 1 - alpha(t), v = M_beta(t) (the iso-line s = 1/2 of (5)), symbolic in alpha_k, beta',
+        reference='sympy',
+    )
 
 
 @claim(doc="yang", section="5", ref="(8), (9)", statement="substituting v = (beta-1) t/(2 beta t - t - beta) into (6): g u = h v^2 + p v + q with g = beta^2 (1-beta), h = 2 a1 + 8 b^3 - ..., p = beta(5 beta - 4 beta^2 + ...), q = -(1-a1) beta^2 (1-beta)")
@@ -154,7 +157,10 @@ def eq10_13():
     assert sympy.simplify(dudv.subs(t, 0) - 2 * b * (a1 - a2) / (1 - b)) == 0
     assert sympy.simplify(dudv.subs(t, 1) - 2 * (1 - b) * (a2 - a3) / b) == 0
     assert vv.subs(t, 0) == 0 and sympy.simplify(vv.subs(t, 1)) == 1
-    return verified("symbolic in alpha_k, beta; k1, k2 are du/dv in the domain normalized to v0 = 0, v1 = 1 (k = m (v1 - v0)/n)")
+    return verified("symbolic in alpha_k, beta; k1, k2 are du/dv in the domain normalized to v0 = 0, v1 = 1 (k = m (v1 - v0)/n)",
+        compared="printed (10)-(13) (u0, u1, k1, k2) vs sympy: u = 1 - alpha(t) at t = 0, 1 and du/dv = u'(t)/v'(t) at t = 0, 1, simplified symbolically",
+        reference='sympy',
+    )
 
 
 @claim(doc="yang", section="5", ref="(14), Type 1", statement="m0 = 0: alpha2 = alpha1 (14) and beta = 2(u1-u0)/(2(u1-u0)+k2) in (0,1) for monotonic curves")
@@ -168,7 +174,10 @@ def eq14():
         kk = mpq(rng.randint(1, 50), 20) * (1 if du > 0 else -1)  # monotone: k2 has the sign of u1 - u0
         bb = 2 * du / (2 * du + kk)
         assert 0 < bb < 1
-    return verified("symbolic solve of (13) with alpha2 = alpha1; beta in (0, 1) whenever k2 and u1 - u0 have the same sign (200 exact monotone cases)")
+    return verified("symbolic solve of (13) with alpha2 = alpha1; beta in (0, 1) whenever k2 and u1 - u0 have the same sign (200 exact monotone cases)",
+        compared='printed (14) beta = 2(u1-u0)/(2(u1-u0)+k2) vs sympy solve of (13) with alpha2 = alpha1; beta in (0, 1) on 200 exact monotone rational cases',
+        reference='sympy',
+    )
 
 
 @claim(doc="yang", section="5", ref="(15)", statement="From Eq. (12), beta = 2(a2 - a3)/(2(a2 - a3) + k2); substituting (15) into (13): 4 a2^2 - 4(a1 + a3) a2 + 4 a1 a3 + k1 k2 = 0")
@@ -230,11 +239,32 @@ def eq16_17():
             al = a.params["alpha"]
             assert 0 < al[1] < 1 and min(al[0], al[2]) <= al[1] <= max(al[0], al[2]) and 0 < a.beta < 1
     assert count > 100
+    # independent of exactcagd: the printed (16) root itself on random exact monotone data in the normalized domain
+    # (a1 = 1 - u0, a3 = 1 - u1, k1, k2 of the sign of u1 - u0), exact sqrt comparisons in sympy
+    printed_count = 0
+    for _ in range(150):
+        aa1, aa3 = sympy.Rational(rng.randint(0, 40), 40), sympy.Rational(rng.randint(0, 40), 40)
+        if aa1 == aa3:
+            continue
+        sg = 1 if aa1 > aa3 else -1  # u1 - u0 = a1 - a3
+        kk1, kk2 = (sg * abs(aa1 - aa3) * sympy.Rational(rng.randint(1, 50), 40) for _ in range(2))
+        delta = (aa1 - aa3) ** 2 - kk1 * kk2
+        if delta < 0:
+            continue
+        for sign in (1, -1):  # printed '+' and the other root
+            al2 = (aa1 + aa3 + sign * sympy.sqrt(delta)) / 2
+            assert sympy.expand(4 * al2**2 - 4 * (aa1 + aa3) * al2 + 4 * aa1 * aa3 + kk1 * kk2) == 0
+            bb = 2 * (al2 - aa3) / (2 * (al2 - aa3) + kk2)
+            assert 0 < al2 < 1 and min(aa1, aa3) < al2 < max(aa1, aa3) and 0 < bb < 1
+            printed_count += 1
+    assert printed_count > 100
     return verified_range(
-        f"{count} random monotone exact instances, both roots",
+        f"{count} random monotone exact instances through s_parabola and {printed_count} exact evaluations of the printed (16), both roots",
         "the two roots are (a1 + a3 -+ sqrt(Delta))/2; (17) is (16)'s Delta in curve data (symbolic); for k1 k2 > 0 "
         "sqrt(Delta) < |a1 - a3|, so BOTH roots lie strictly between alpha1 and alpha3 (hence in (0,1)) and give beta in (0,1): "
         "the paper's '+' is a choice, not a necessity (exactcagd: root='paper' | 'other')",
+        compared='printed (16) roots and (17) Delta vs sympy solve of the quadratic after (15) and substitution of the curve data; the printed root (and the other) evaluated with exact sympy sqrt on random monotone rational data: a root of the quadratic, strictly between alpha1 and alpha3, beta of (15) in (0, 1)',
+        reference='sympy',
     )
 
 
@@ -342,8 +372,29 @@ def cubic_form():
 @claim(doc="yang", section="6", ref="degree max(2m+n, m+2n)", statement="the approximate curve has degree max(2m + n, m + 2n), lower than 2m + 2n (conics) and (m + n) d (exact)")
 def degree_claim():
     rng = random.Random(4)
+    x = sympy.Symbol("x")
+    # independent reference: the reduced degree of F(u(t), v(t)) by sympy substitution, for an s-parabola
+    # (u quadratic, v Möbius: alpha = (1/5, 4/5, 3/10), beta = 2/5), a t-parabola (roles swapped) and a rational conic
+    vals = {a1: sympy.Rational(1, 5), a2: sympy.Rational(4, 5), a3: sympy.Rational(3, 10), b: sympy.Rational(2, 5)}
+    quad, mob = (1 - ALPHA).subs(vals), M.subs(vals)
+    wq = 1 + x**2 - x  # conic weight (1, 1/2, 1) in Bernstein form: (1-x)^2 + x (1-x) + x^2
+    conic_u = (sympy.Rational(1, 5) * (1 - x) ** 2 + sympy.Rational(1, 2) * x * (1 - x) + sympy.Rational(4, 5) * x**2) / wq
+    conic_v = (x * (1 - x) + sympy.Rational(1, 3) * x**2) / wq
+
+    def image_degree(F, uu, vv, var):
+        """Degree of the reduced rational curve F(uu(var), vv(var)) (max over the components)."""
+        degs = []
+        for comp in F:
+            num, den = sympy.fraction(sympy.cancel(sympy.together(comp.subs({u: uu, v: vv}, simultaneous=True))))
+            degs.append(max(sympy.degree(num, var), sympy.degree(den, var)))
+        return max(degs)
+
     for m, n in [(1, 2), (2, 1), (3, 3), (2, 3)]:
         S = BezierSurface([[[rng.randint(-3, 3) for _ in range(3)] for _ in range(n + 1)] for _ in range(m + 1)])
+        F = S.to_sympy(u, v)
+        assert image_degree(F, quad, mob, t) == 2 * m + n
+        assert image_degree(F, mob, quad, t) == m + 2 * n
+        assert image_degree(F, conic_u, conic_v, x) == 2 * (m + n)
         p0, p1 = (mpq(1, 5), mpq(1, 10)), (mpq(4, 5), mpq(9, 10))
         sp_ = s_parabola(p0, (mpq(1, 2), mpq(1)), p1, (mpq(1, 4), mpq(1)))
         tp = parabola(p0, (mpq(1), mpq(1, 4)), p1, (mpq(1), mpq(1, 2)))
@@ -360,7 +411,9 @@ def degree_claim():
         assert substitute_curve(S.homogeneous(), *conic).shape[0] - 1 == 2 * (m + n)
     return verified(
         "s-parabola images have degree 2m + n (u quadratic: 2m, v Möbius: n), t-parabolas m + 2n; a rational conic "
-        "domain curve (section 1's alternative) gives 2(m + n); checked on 4 bidegrees"
+        "domain curve (section 1's alternative) gives 2(m + n); checked on 4 bidegrees",
+        compared="printed degrees 2m + n / m + 2n / 2(m + n) vs the reduced degree (sympy cancel) of F(u(t), v(t)) after substituting an s-parabola, a t-parabola and a rational conic into a random integer surface of bidegree (m, n); the package's image nets have that many control points",
+        reference='sympy',
     )
 
 
@@ -379,7 +432,10 @@ def table_degrees():
     F = patch.to_sympy(u, v)
     num, den = sympy.fraction(sympy.cancel(sympy.together(F[2].subs({u: K[0], v: K[1]}, simultaneous=True))))
     assert max(sympy.degree(num, tt), sympy.degree(den, tt)) == 18
-    return verified("bicubic B-spline surface and cubic NURBS domain curve: parabola 9 = 2m+n, hyperbola 6 = polyline 6 = m+n, exact image of one piece 18 = (m+n) d (reduced rational function)")
+    return verified("bicubic B-spline surface and cubic NURBS domain curve: parabola 9 = 2m+n, hyperbola 6 = polyline 6 = m+n, exact image of one piece 18 = (m+n) d (reduced rational function)",
+        compared='Exact 18 vs the reduced degree (sympy cancel) of F(K(t)) for a cubic piece on a random bicubic patch; the parabola 9 / hyperbola 6 / polyline 6 entries are the degrees exactcagd reports for its approximations (their formula is derived in sympy by degree_claim)',
+        reference='sympy',
+    )
 
 
 class _Radicals:
@@ -453,7 +509,10 @@ def table_continuity():
     assert joints == len(r.segments)
     h = approximate(S, D, "1e-2", "hyperbola", angle_tol=10)
     assert h.max_joint_angle <= 10
-    return verified("exact G1 at every joint of the parabola result: the end tangents P_1 - P_0, P_n - P_(n-1) of consecutive segments, computed in sympy from their control points, have cross product 0 and positive dot product; baselines meet their angle tolerance; segments are exact images X(u(t), v(t)) (tests check it at 2N+1 parameters)")
+    return verified("exact G1 at every joint of the parabola result: the end tangents P_1 - P_0, P_n - P_(n-1) of consecutive segments, computed in sympy from their control points, have cross product 0 and positive dot product; baselines meet their angle tolerance; segments are exact images X(u(t), v(t)) (tests check it at 2N+1 parameters)",
+        compared="printed 'parabola G1' vs sympy: end tangents P_1 - P_0 and P_n - P_(n-1) of consecutive segments from their control points, cross product exactly 0 (radicals reduced symbolically) and dot product > 0 at 50 digits; the baselines' angles are the package's measured joint angle",
+        reference='sympy',
+    )
 
 
 @claim(doc="yang", section="4.2", ref="hyperbola iso-lines", statement="a vertical/horizontal segment of the quadratic reparameterization's domain is a hyperbola in the original domain; an s-hyperbola has only three variables alpha1, alpha2, beta, so G1 (four constraints) is impossible in general")
@@ -476,6 +535,8 @@ def quadratic_iso_lines():
     return verified(
         "symbolic: the iso-line s = 1/2 of (4) satisfies a conic equation with only a u v quadratic term (a hyperbola, "
         "B^2 - 4AC > 0); its end slopes satisfy k(0) k(1) = (u1 - u0)^2 whatever beta, so end data with "
-        "(u0 - u1)^2 != k1 k2 cannot be matched: G1 needs the cubic reparameterization"
+        "(u0 - u1)^2 != k1 k2 cannot be matched: G1 needs the cubic reparameterization",
+        compared='printed 4.2 claim (iso-lines of (4) are hyperbolas; G1 impossible in general) vs sympy elimination of t: conic with only a u v quadratic term (B^2 - 4AC > 0), and the end-slope product k(0) k(1) = (u1 - u0)^2 for every beta',
+        reference='sympy',
     )
 
