@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 import sympy
 from gmpy2 import mpq
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from exactcagd import BezierCurve, BezierSurface, BSplineCurve, BSplineSurface
@@ -366,12 +366,18 @@ def test_iso_parametric_curve_is_exact():
 
 
 # ----------------------------------------------------------------------------- Hausdorff bounds
-@settings(max_examples=15, deadline=None)
-@given(st.integers(0, 10**6))
-def test_hausdorff_bound_is_an_upper_bound(seed):
+def _hausdorff_case(seed):
     rng = random.Random(seed)
     a = BezierCurve([[rng.randint(0, 20) / 20, k / 3 + rng.randint(-2, 2) / 40] for k in range(4)], [rng.randint(1, 3) for _ in range(4)])
     b = BezierCurve([a.control_points[0], [rng.randint(0, 20) / 20, mpq(1, 2)], a.control_points[-1]])
+    return a, b
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.integers(0, 10**6))
+@example(446)  # arcs bulging to opposite sides: the foot point jumps, monotone pairing fails
+def test_hausdorff_bound_is_an_upper_bound(seed):
+    a, b = _hausdorff_case(seed)
     ts = np.linspace(0, 1, 801)
     pa, pb = _float_points(a, ts), _float_points(b, ts)
     h = max(_to_polyline(pa, pb).max(), _to_polyline(pb, pa).max())  # ~ H from below (sagitta ~1e-6)
@@ -379,6 +385,34 @@ def test_hausdorff_bound_is_an_upper_bound(seed):
     assert hb is not None  # certifiable within 10 % of the truth
     assert h <= float(hb) + 1e-9
     assert piece_bound(a.homogeneous(), a.homogeneous()) >= 0
+
+
+def _sympy_point_distance(p, curve, s):
+    """Exact-root distance from the rational point ``p`` to a rational Bézier ``curve``:
+    minimum of |C(s) - p| over the real critical points of |C(s) - p|^2 in [0, 1] and the
+    ends (sympy, independent of the code under test)."""
+    C = _sym_curve(curve.homogeneous(), s)
+    d2 = sympy.together(sum((c - _sym(x)) ** 2 for c, x in zip(C, p)))
+    num = sympy.Poly(sympy.numer(sympy.together(sympy.diff(d2, s))), s)
+    cands = [sympy.Integer(0), sympy.Integer(1)] + [r for r in num.real_roots() if 0 <= r <= 1]
+    return min(float(sympy.sqrt(d2.subs(s, r)).evalf(30)) for r in cands)
+
+
+def test_hausdorff_bound_when_foot_points_jump():
+    """Seed 446: A bulges right, B left; the nearest point of B to A(t) jumps, so the
+    monotone piece pairing (a Fréchet-like bound) never came within 10 % of H and
+    hausdorff_bound returned None.  Reference: exact points of A and B (rational
+    parameters), their distance to the other curve from sympy's exact critical points."""
+    a, b = _hausdorff_case(446)
+    s = sympy.Symbol("s")
+    lower = max(
+        max(_sympy_point_distance(x.evaluate(mpq(k, 24)), y, s) for k in range(25))
+        for x, y in ((a, b), (b, a))
+    )
+    assert 0.46 < lower < 0.47
+    limit = mpq(11, 10) * mpq(lower) + mpq(1, 10**4)
+    hb = hausdorff_bound(a.homogeneous(), b.homogeneous(), limit)
+    assert hb is not None and lower <= float(hb) and hb <= limit
 
 
 # ----------------------------------------------------------------------------- degenerate input

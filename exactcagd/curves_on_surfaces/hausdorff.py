@@ -51,7 +51,7 @@ from ..exact import bernstein as bz
 from ..exact.quadratic import QuadraticNumber
 from ..exact.scalars import to_rational
 
-__all__ = ["hausdorff_bound", "piece_bound", "ball_piece_bound", "sqrt_upper", "upper", "float_hausdorff"]
+__all__ = ["hausdorff_bound", "piece_bound", "directed_piece_bound", "ball_piece_bound", "ball_directed_bound", "sqrt_upper", "upper", "float_hausdorff"]
 
 
 def upper(x) -> mpq:
@@ -157,13 +157,25 @@ def _one_sided(pa: list, pb: list):
 def piece_bound(hom_a: np.ndarray, hom_b: np.ndarray) -> mpq:
     """Rational upper bound of ``H(A, B)`` for two rational Bézier pieces (positive weights)."""
     pa, pb = _points(hom_a), _points(hom_b)
-    best = mpq(0)
-    for x, y in ((pa, pb), (pb, pa)):
-        a_part, delta = _one_sided(x, y)
-        value = sqrt_upper(a_part) + sqrt_upper(delta)
-        if value > best:
-            best = value
-    return best
+    return max(_directed_points_bound(pa, pb), _directed_points_bound(pb, pa))
+
+
+def directed_piece_bound(hom_a: np.ndarray, hom_b: np.ndarray) -> mpq:
+    """Rational upper bound of the one-sided distance ``h(A -> B) = max_{p in A} dist(p, B)``
+    (the module's piece bound, one direction: ``max_k dist(Q^A_k, [b_0, b_1]) + delta_B``).
+
+    >>> from exactcagd import BezierCurve
+    >>> a = BezierCurve([[0, 1], [1, 1]]).homogeneous()
+    >>> b = BezierCurve([[0, 0], [2, 0]]).homogeneous()
+    >>> directed_piece_bound(a, b), directed_piece_bound(b, a) > 1
+    (mpq(1,1), True)
+    """
+    return _directed_points_bound(_points(hom_a), _points(hom_b))
+
+
+def _directed_points_bound(pa: list, pb: list) -> mpq:
+    a_part, delta = _one_sided(pa, pb)
+    return sqrt_upper(a_part) + sqrt_upper(delta)
 
 
 # ---------------------------------------------------------------------- ball arithmetic
@@ -250,6 +262,19 @@ def _ball_top(values) -> flint.arb:
     for v in values:
         best = v if best is None else best.max(v)
     return best
+
+
+def ball_directed_bound(rows_a: list, rows_b: list) -> mpq | None:
+    """:func:`directed_piece_bound` of two pieces given as ball rows; ``None`` when undecided
+    (a degenerate chord in balls, or a ball reaching 0: see :func:`ball_piece_bound`)."""
+    parts = _ball_one_sided(_ball_points(rows_a), _ball_points(rows_b))
+    if parts is None:
+        return None
+    a_part, delta = parts
+    value = a_part.nonnegative_part().sqrt() + delta.nonnegative_part().sqrt()
+    if not value > 0:
+        return None
+    return ball.upper_rational(value)
 
 
 def ball_piece_bound(rows_a: list, rows_b: list) -> mpq | None:
@@ -350,7 +375,95 @@ def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512,
     (``{"ball": n, "exact": m}``, :mod:`exactcagd.composition.ball`).
     """
     with ball.precision():
-        return _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
+        bound = _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
+        if bound is None:
+            bound = _unpaired_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
+        return bound
+
+
+def _unpaired_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
+    """``max(h(A -> B), h(B -> A))`` bounded one direction at a time, or ``None``.
+
+    The paired route cuts both curves monotonically, so its bound tends to the Fréchet
+    distance, which can exceed ``H`` by far (two arcs bulging to opposite sides: the foot
+    point of ``A(t)`` on ``B`` jumps).  Here each direction is certified on its own:
+    ``h(A_i -> B) <= h(A_i -> W)`` for *any* window ``W`` of ``B``, so every piece of ``A``
+    only needs one window of ``B`` (no monotonicity, no covering of ``B``).
+    """
+    limit = to_rational(limit, where="limit")
+    if float_hausdorff(hom_a, hom_b, 33) > float(limit) * (1 + 1e-9):
+        return None
+    first = _directed_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
+    if first is None:
+        return None
+    second = _directed_bound(hom_b, hom_a, limit, pieces, max_pieces, stats)
+    return None if second is None else max(first, second)
+
+
+def _window(f: float, half: float) -> tuple:
+    """Dyadic window ``[lo, hi]`` of ``[0, 1]`` around the float parameter ``f`` (``lo < hi``)."""
+    scale = 2**40
+    lo = max(0, int(np.floor((f - half) * scale)))
+    hi = min(scale, int(np.ceil((f + half) * scale)))
+    if hi <= lo:
+        lo, hi = (hi - 1, hi) if hi > 0 else (0, 1)
+    return mpq(lo, scale), mpq(hi, scale)
+
+
+def _directed_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
+    """Certified upper bound ``<= limit`` of ``h(A -> B)``, or ``None``.
+
+    Each piece ``A_i`` tries windows of ``B`` around the float foot points of its two ends
+    and midpoint (global nearest samples of ``B``), each wide enough for ``B`` to travel
+    twice the chord of ``A_i``, and the window spanning all three feet; a piece that no
+    window certifies is bisected (windows shrink with it, the bound tends to
+    ``max dist(p, B)``).
+    """
+    hf_a, hf_b = _float_hom(hom_a), _float_hom(hom_b)
+    foot = _Footer(hf_b)
+    speeds = np.sqrt((np.diff(foot.pts, axis=0) ** 2).sum(-1)) / foot.h
+    balls_a, balls_b = _ball_rows(hom_a), _ball_rows(hom_b)
+    stack = [(mpq(i, pieces), mpq(i + 1, pieces)) for i in range(pieces)]
+    count, best = len(stack), mpq(0)
+    while stack:
+        ta, tb = stack.pop()
+        ends = _eval(hf_a, [float(ta), float((ta + tb) / 2), float(tb)])
+        feet = [foot(p, 0.0, 1.0) for p in ends]
+        chord = float(np.sqrt(((ends[2] - ends[0]) ** 2).sum()))
+        windows = []
+        for f in feet:
+            speed = speeds[min(int(f / foot.h), len(speeds) - 1)]
+            windows.append(_window(f, min(1.0, max(2 * chord / max(speed, 1e-300), 2.0**-30))))
+        windows.append((min(w[0] for w in windows), max(w[1] for w in windows)))
+        bound = _certify_window(hom_a, hom_b, balls_a, balls_b, (ta, tb), windows, limit, stats)
+        if bound is not None:
+            best = max(best, bound)
+            continue
+        if count >= max_pieces:
+            return None
+        tm = (ta + tb) / 2
+        stack += [(ta, tm), (tm, tb)]
+        count += 1
+    return best
+
+
+def _certify_window(hom_a, hom_b, balls_a, balls_b, piece, windows, limit, stats):
+    """The first window's one-sided bound ``<= limit`` (balls first, then exact), or ``None``."""
+    ta, tb = piece
+    if balls_a is not None and balls_b is not None:
+        rows_a = _ball_restrict(balls_a, ta, tb)
+        for sa, sb in windows:
+            quick = ball_directed_bound(rows_a, _ball_restrict(balls_b, sa, sb))
+            if quick is not None and quick <= limit:
+                ball.count(stats, ball.BALL)
+                return quick
+    piece_a = restrict_fast(hom_a, ta, tb)
+    for sa, sb in windows:
+        bound = directed_piece_bound(piece_a, restrict_fast(hom_b, sa, sb))
+        if bound <= limit:
+            ball.count(stats, ball.EXACT)
+            return bound
+    return None
 
 
 def _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
