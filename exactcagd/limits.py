@@ -9,23 +9,34 @@ limit raises :class:`~exactcagd.errors.LimitError` naming the argument, the esti
 the limit and how to raise it.
 
 ==========================  =========  ==============================================
-limit                       default    what it bounds
+limit                       default    what it bounds (and where it is checked)
 ==========================  =========  ==============================================
-``max_degree``              1000       degree (per parameter) of a curve, surface or
-                                       polynomial given or built (elevation,
-                                       composition, products, reparametrization)
-``max_control_points``      100000     control points of one curve or surface (input
-                                       or output), B-spline knots, fitted points
-``max_implicit_degree``     24         degree of a curve's implicit equation
-                                       (resultant of degree-n polynomials)
-``max_surface_implicit``    12         degree of a surface's implicit equation
-                                       (``2mn`` for a tensor patch of degree (m, n))
+``max_degree``              1000       degree of a Bézier curve/surface given (per
+                                       parameter) or built: elevation, Bernstein
+                                       products, composition ``N (l + m)``; B-spline
+                                       degree; exponents of algebra inputs; degrees and
+                                       orders asked of the toolbox.  A degree-1000
+                                       composition takes ~1-3 s; the 40 x 40 surface
+                                       composed with a degree-40 curve (3200) took 27 s
+``max_control_points``      100000     control points of one curve or surface (Bézier
+                                       or B-spline), values generated on request
+                                       (forward differencing), entries of dense exact
+                                       matrices (Gram matrices, integral tables)
+``max_implicit_degree``     24         degree of a curve entering the implicit algebra
+                                       (implicitization, inversion, moving lines, ...),
+                                       total degree in bivariate solving, degree of
+                                       Sylvester/Bezout resultants.  Implicitizing a
+                                       random degree-24 curve: 1.9 s; 30: 14 s; 40: > 60 s
+``max_surface_implicit``    12         implicit degree ``2 l m`` of a tensor patch
 ``max_input_bits``          1000000    bits of the numerator or denominator of one
-                                       input number (ints, Fractions, number strings;
-                                       ``gmpy2.mpq`` values, the package's own exact
-                                       type, are taken as they are)
-``max_subdivision_depth``   200        depth of recursive splitting requested
+                                       input number (ints, Fractions, number strings --
+                                       bounded before they are built: ``"1e100000000"``
+                                       -- and ``snap_bits``); ``gmpy2.mpq`` values, the
+                                       package's own exact type, are taken as they are
 ==========================  =========  ==============================================
+
+Counts (degrees, amounts, numbers of points) of ``2^62`` or more are refused by
+:func:`exactcagd.exact.scalars.to_count` whatever the limits.
 
 A limit is raised for a block with :func:`raised` or for the process with
 :func:`set_limits`; ``None`` removes a limit.
@@ -60,7 +71,6 @@ DEFAULTS: dict[str, int | None] = {
     "max_implicit_degree": 24,
     "max_surface_implicit": 12,
     "max_input_bits": 1_000_000,
-    "max_subdivision_depth": 200,
 }
 
 _process: dict[str, int | None] = dict(DEFAULTS)

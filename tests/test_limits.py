@@ -297,3 +297,21 @@ def test_bad_tolerances_are_refused_everywhere(name):
     for tol in _BAD_TOLERANCES:
         with pytest.raises(ExactCAGDError):
             call(tol)
+
+
+def test_every_documented_limit_is_checked_by_some_entry_point():
+    """A limit in the table that nothing checks would be a promise not kept (issue 14)."""
+    from exactcagd.algebra import SurfaceParametrization, implicitize
+
+    cubic_patch = BezierSurface([[[i, j, (i * j) % 2] for j in range(4)] for i in range(4)])
+    trips = {
+        "max_degree": lambda: BezierCurve([[0, 0], [1, 1]]).elevate(1000),
+        "max_control_points": lambda: BSplineCurve([[0, 0]] * 100_001, knots=[0] * 2 + list(range(1, 100_000)) + [100_000] * 2),
+        "max_implicit_degree": lambda: implicitize(BezierCurve([[k, k * k % 5] for k in range(26)])),
+        "max_surface_implicit": lambda: SurfaceParametrization.from_bezier_surface(cubic_patch),
+        "max_input_bits": lambda: to_rational("1e400000"),
+    }
+    assert set(trips) == set(limits.DEFAULTS)
+    for name, call in trips.items():
+        with pytest.raises(LimitError, match=name):
+            call()
