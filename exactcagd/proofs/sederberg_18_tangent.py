@@ -46,7 +46,9 @@ def tangent_degree():
         T = P.cross(P.diff(t))
         assert _deg(T) == 2 * m - 2
         assert tangent_moving_line(_rand_curve(r, m)).degree == 2 * m - 2
-    return verified_range("m = 2..6, random rational curves", "deg(P x P') = 2m - 2 exactly (sympy); no cusps: no reduction")
+    return verified_range("m = 2..6, random rational curves", "deg(P x P') = 2m - 2 exactly (sympy); no cusps: no reduction",
+        compared="printed degree 2m - 2 of P x P' vs the degree of the cross product computed in sympy from the Bernstein form",
+        reference='sympy')
 
 
 @claim(DOC, "18.5.1", "(18.93)-(18.95)", "P x P' = m [sum B_i^(m-1) P_i] x [sum B_i^(m-1) P_(i+1)]")
@@ -59,7 +61,9 @@ def tangent_control_line_formula():
         A, B = _bern(hom[:-1]), _bern(hom[1:])
         assert (P.cross(P.diff(t)) - m * A.cross(B)).applyfunc(sp.expand) == sp.zeros(3, 1)
         assert (P.cross(P.diff(t)) - _bern(tangent_control_lines(c))).applyfunc(sp.expand) == sp.zeros(3, 1)
-    return verified_range("m = 2, 3, 4, random rational curves", "symbolic identity; tangent_control_lines() reproduces it")
+    return verified_range("m = 2, 3, 4, random rational curves", "symbolic identity; tangent_control_lines() reproduces it",
+        compared="printed (18.93)-(18.95) m [sum B P_i] x [sum B P_(i+1)] vs sympy P x P' expanded identically; exactcagd's tangent_control_lines reproduces it",
+        reference='sympy')
 
 
 @claim(DOC, "18.5.1", "(18.96)", "the envelope Point(L x L') lies on L and L is tangent to it there")
@@ -68,7 +72,9 @@ def envelope_property():
     L = _bern([(r.randint(-5, 5), r.randint(-5, 5), r.randint(-5, 5)) for _ in range(4)])
     E = L.cross(L.diff(t))
     assert sp.expand(L.dot(E)) == 0 and sp.expand(L.dot(E.diff(t))) == 0
-    return verified("L . E = 0 and L . E' = 0 (the tangent of E lies in L), random cubic moving line")
+    return verified("L . E = 0 and L . E' = 0 (the tangent of E lies in L), random cubic moving line",
+        compared="printed envelope property vs sympy L . (L x L') = 0 and L . (L x L')' = 0 for a random cubic moving line",
+        reference='sympy')
 
 
 @claim(DOC, "18.5.2", "(18.97)", "(P x P') x (P x P')' has degree 4m - 6 and equals P up to a factor (3m - 6 base points)")
@@ -81,7 +87,9 @@ def reciprocal_of_reciprocal():
         det = sp.expand(P.dot(P.diff(t).cross(P.diff(t, 2))))
         assert (BB - det * P).applyfunc(sp.expand) == sp.zeros(3, 1)
         assert _deg(BB) == 4 * m - 6 and sp.Poly(det, t).degree() == 3 * m - 6
-    return verified_range("m = 3, 4", "(A x A') x (A x A')' = det(A, A', A'') A identically; degrees 4m - 6 and 3m - 6")
+    return verified_range("m = 3, 4", "(A x A') x (A x A')' = det(A, A', A'') A identically; degrees 4m - 6 and 3m - 6",
+        compared="printed (18.97) vs the sympy identity (A x A') x (A x A')' = det(A, A', A'') A and the sympy degrees 4m - 6, 3m - 6",
+        reference='sympy')
 
 
 @claim(DOC, "18.5.2", "(18.98)-(18.100)", "2 kappa + iota = 3m - 6 and delta + kappa = (m - 1)(m - 2)/2 for rational curves")
@@ -101,6 +109,20 @@ def plucker():
             assert D.eval(sp.Rational(str(tc.value))) == 0 and D.diff(t).eval(sp.Rational(str(tc.value))) == 0
         iota = total - 2 * kappa
         assert 2 * kappa + iota == 3 * m - 6 and D.degree() <= total
+        # independent (sympy): det(P, P', P'') from the Bernstein form; its double roots are the cusps (P x P' = 0 there),
+        # its simple roots inflections (P x P' != 0); a root at t = oo of multiplicity 3m - 6 - deg
+        P = _bern(_hom(c))
+        T = P.cross(P.diff(t))
+        _, factors = sp.sqf_list(sp.expand(P.dot(P.diff(t).cross(P.diff(t, 2)))), t)
+        at_infinity = total - sum(sp.degree(f, t) * k for f, k in factors)
+        for f, k in factors:
+            assert k <= 2
+            divides_all = all(sp.rem(sp.expand(e), f, t) == 0 for e in T)
+            assert divides_all == (k == 2), (m, f, k)
+        if at_infinity <= 1:  # ordinary there as well (the polynomial quintic has a triple root at t = oo: not an ordinary point)
+            kappa_sympy = sum(sp.degree(f, t) for f, k in factors if k == 2)
+            iota_sympy = sum(sp.degree(f, t) for f, k in factors if k == 1) + at_infinity
+            assert kappa_sympy == kappa and 2 * kappa_sympy + iota_sympy == 3 * m - 6
         dp = double_points(c)
         assert sum(d.count for d in dp) == (m - 1) * (m - 2) // 2
         rows.append((m, kappa, iota))
@@ -115,7 +137,9 @@ def reciprocal_factor():
     B = k1 * A.cross(A.diff(t))
     k2 = 1 / (k1**2 * A.cross(A.diff(t)).dot(A.diff(t, 2)))
     assert (k2 * B.cross(B.diff(t)) - A).applyfunc(sp.simplify) == sp.zeros(3, 1)
-    return verified("symbolic with arbitrary functions a_i(t), k1(t)")
+    return verified("symbolic with arbitrary functions a_i(t), k1(t)",
+        compared="printed (18.101)-(18.103) k2 = 1/(k1^2 A x A' . A'') vs sympy simplification with arbitrary functions a_i(t), k1(t)",
+        reference='sympy')
 
 
 @claim(DOC, "18.5.2", "table 18.1", "double point <-> double tangent; cusp <-> inflection point")
@@ -135,7 +159,9 @@ def reciprocal_correspondence():
     B = (B / g).applyfunc(sp.cancel)
     detB = sp.expand(B.dot(B.diff(t).cross(B.diff(t, 2))))
     assert detB.subs(t, sp.Rational(1, 2)) == 0
-    return verified("crunode t = +-1 -> one tangent line of the reciprocal at both; cusp t = 1/2 -> det(B, B', B'') = 0 there")
+    return verified("crunode t = +-1 -> one tangent line of the reciprocal at both; cusp t = 1/2 -> det(B, B', B'') = 0 there",
+        compared="printed table 18.1 (double point <-> double tangent, cusp <-> inflection) vs sympy tangent lines of the reciprocal curve at the crunode t = +-1 and det(B, B', B'') at the cusp t = 1/2",
+        reference='sympy')
 
 
 @claim(DOC, "18.5.3", "(18.104)-(18.109)", "L_H[t] = sum L_Hi, P_H[t] = sum P_Hi with P_Hi = (b_i, -a_i): a scaled hodograph")
