@@ -62,7 +62,7 @@ import threading
 
 from .errors import InputError, LimitError
 
-__all__ = ["DEFAULTS", "get", "check", "raised", "set_limits", "current"]
+__all__ = ["DEFAULTS", "check", "current", "get", "raised", "set_limits"]
 
 #: The documented defaults (see the table above).
 DEFAULTS: dict[str, int | None] = {

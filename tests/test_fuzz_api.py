@@ -133,7 +133,8 @@ surface_obj = ref("saddle", "biquad", "rational_surface", "bspline_surface")
 domain = st.one_of(ref("domain_line", "domain_quad", "domain_iso", "parabola", "space_curve", "bspline"), st.sampled_from(BAD))
 surface = st.one_of(surface_obj, st.sampled_from(BAD))
 plane_curve = st.one_of(planar, ref("space_curve", "bspline"), st.sampled_from(BAD))
-method = lambda *good: st.one_of(st.sampled_from(good), st.sampled_from(["nope", None, 3, True, b"fast"]))  # noqa: E731
+def method(*good):
+    return st.one_of(st.sampled_from(good), st.sampled_from(["nope", None, 3, True, b"fast"]))
 coefficients = st.one_of(
     st.lists(st.sampled_from([-1, 0, 1, "1/3", 2]), min_size=1, max_size=5),
     st.sampled_from([[], [0, 0, 0], [1] * 1500, [10**5000, -1, 1], [[1, 2], [3, 4]], [1, None], [1, "abc"], "123"]),
@@ -148,7 +149,9 @@ def _call(obj, name, *args, **kwargs):
 
 def _entries() -> dict:
     """name -> (function run in the worker, strategy of (args, kwargs))."""
-    args = lambda *a, **k: st.tuples(st.tuples(*a), st.fixed_dictionaries(k))  # noqa: E731
+    def args(*a, **k):
+        return st.tuples(st.tuples(*a), st.fixed_dictionaries(k))
+
     E = {}
 
     # constructors
@@ -511,7 +514,7 @@ def test_every_call_returns_or_raises_a_package_error(worker, name, data):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", _cases())
-@settings(max_examples=int(os.environ.get("FUZZ_EXAMPLES", 150)), deadline=None, suppress_health_check=list(HealthCheck))
+@settings(max_examples=int(os.environ.get("FUZZ_EXAMPLES", "150")), deadline=None, suppress_health_check=list(HealthCheck))
 @given(data=st.data())
 def test_every_call_returns_or_raises_a_package_error_long(worker, name, data):
     _check(worker, name, data.draw(ENTRIES[name][1], label="arguments"))

@@ -7,6 +7,7 @@ References are independent: Python's Fraction for the parsed values, IEEE 754 fa
 import math
 import sys
 import threading
+import time
 from fractions import Fraction
 
 import pytest
@@ -15,8 +16,8 @@ from gmpy2 import mpq
 from hypothesis import given
 from hypothesis import strategies as st
 
-from exactcagd import limits
-from exactcagd.errors import ExactCAGDError, InputError, LimitError
+from exactcagd import BezierCurve, BezierSurface, BSplineCurve, compose, limits
+from exactcagd.errors import ExactCAGDError, InputError, LimitError, WeightError
 from exactcagd.exact.scalars import to_count, to_float, to_rational, to_tolerance
 
 
@@ -63,9 +64,8 @@ def test_set_limits_process_wide():
 def test_bad_limit_settings_are_refused(bad):
     with pytest.raises(InputError):
         limits.set_limits(**bad)
-    with pytest.raises(InputError):
-        with limits.raised(**bad):
-            pass
+    with pytest.raises(InputError), limits.raised(**bad):
+        pass
 
 
 # ---------------------------------------------------------------- to_tolerance
@@ -118,7 +118,7 @@ def test_huge_integers_are_exact_not_overflow():
     assert to_rational(big) == big
     assert to_rational("1" + "0" * 5000) == big  # no 4300-digit cap of int(str)
     assert to_rational("1/1" + "0" * 5000) * big == 1
-    assert to_rational(f"1e5000") == big
+    assert to_rational("1e5000") == big
 
 
 def test_to_float_rule_beyond_the_float_range():
@@ -160,10 +160,6 @@ def test_malformed_number_strings(text):
 
 
 # ---------------------------------------------------------------- the cases, through the public API
-import time  # noqa: E402
-
-from exactcagd import BezierCurve, BezierSurface, BSplineCurve, compose  # noqa: E402
-from exactcagd.errors import WeightError  # noqa: E402
 
 
 def _refused_quickly(call, limit_name, estimate):
