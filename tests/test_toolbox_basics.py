@@ -172,6 +172,60 @@ def test_parametrize_then_implicitize_round_trip(coeffs):
     assert b.classify_parametric_conic(X, Y, W) == kind
 
 
+def _small_conic_points(coeffs, bound):
+    """Brute force: the nonzero integer points (x, y, w), |.| <= bound, of the form (the reference)."""
+    a, bb, c, d, e, f = coeffs
+    rng = range(-bound, bound + 1)
+    return [(x, y, w) for x, y, w in itertools.product(rng, rng, rng)
+            if (x, y, w) != (0, 0, 0) and a * x * x + bb * x * y + c * y * y + d * x * w + e * y * w + f * w * w == 0]
+
+
+def _on_conic_sympy(coeffs, point):
+    X, Y, W = (R(v) for v in point)
+    return sum(R(k) * m for k, m in zip(coeffs, (X * X, X * Y, Y * Y, X * W, Y * W, W * W))) == 0
+
+
+def test_rational_point_of_a_conic_sympy_missed():
+    """-3x^2 + 2xy + 2y^2 + 2xw - 3yw + 2w^2 has the point (-8, -6, -4) (substitution), but
+    sympy's ternary solver (the old finder) answered non-solutions or None for every variable
+    order, and parametrize_conic claimed there is no rational point."""
+    coeffs = [-3, 2, 2, 2, -3, 2]
+    assert _on_conic_sympy(coeffs, (-8, -6, -4))
+    X, Y, W = b.parametrize_conic(coeffs)
+    t = sp.Symbol("t")
+    xs, ys, ws = (sum(R(c) * t**k for k, c in enumerate(p)) for p in (X, Y, W))
+    assert sp.expand(sum(k * m for k, m in zip(coeffs, (xs**2, xs * ys, ys**2, xs * ws, ys * ws, ws**2)))) == 0
+    assert any(v != 0 for v in X + Y + W)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.integers(-6, 6), min_size=6, max_size=6))
+def test_conic_rational_point_finder_agrees_with_brute_force(coeffs):
+    """Any small non-degenerate conic: a returned point lies on it exactly (sympy
+    substitution); "no rational point" only when brute force finds no integer point
+    with coordinates up to 12 (a point that exists is then found)."""
+    a, bb, c, d, e, f = coeffs
+    M = sp.Matrix([[2 * a, bb, d], [bb, 2 * c, e], [d, e, 2 * f]])
+    if a == bb == c == 0 or M.det() == 0:
+        return
+    point = b._rational_point(b.Conic.of(coeffs))
+    if point is None:
+        assert _small_conic_points(coeffs, 12) == []
+    else:
+        assert any(v != 0 for v in point) and _on_conic_sympy(coeffs, point)
+
+
+def test_rational_point_finder_decides_by_legendre():
+    """x^2 + y^2 = 3 w^2 (3 = 3 mod 4: no point), 7x^2 - 5y^2 = 2w^2 (point (1, 1, 1)),
+    and coefficients with square factors and common factors (12x^2 + 20y^2 - 32w^2,
+    18x^2 - 50y^2 + 32w^2: point (1, 1, 1))."""
+    assert b._rational_point(b.Conic.of([1, 0, 1, 0, 0, -3])) is None
+    for coeffs in ([7, 0, -5, 0, 0, -2], [12, 0, 20, 0, 0, -32], [18, 0, -50, 0, 0, 32]):
+        assert _small_conic_points(coeffs, 6) != []
+        point = b._rational_point(b.Conic.of(coeffs))
+        assert point is not None and _on_conic_sympy(coeffs, point)
+
+
 def test_parametrize_without_rational_point_and_through_given_point():
     with pytest.raises(NotSupportedError):
         b.parametrize_conic([1, 0, 1, 0, 0, -3])  # x^2 + y^2 = 3 has no rational point

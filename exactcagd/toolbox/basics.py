@@ -561,31 +561,164 @@ def _gcd(a: int, b: int) -> int:
     return a
 
 
-def _rational_point(conic: Conic):
-    """A rational point (X, Y, W) of the conic, from sympy's ternary-quadratic solver (Legendre)."""
-    import sympy
-    from sympy.solvers.diophantine.diophantine import diop_ternary_quadratic
+#: Largest number of candidates the Holzer-bound search may try before giving up honestly.
+HOLZER_SEARCH_LIMIT = 4_000_000
 
-    # sympy returns the solution in the sorted order of the symbols: name them accordingly
-    X, Y, W = sympy.symbols("x1 x2 x3", integer=True)
+
+def _rational_point(conic: Conic):
+    """A rational point ``(X, Y, W)`` of the conic, or ``None`` when it provably has none.
+
+    The form is diagonalised over Q (:func:`_diagonalise`), and the diagonal equation is
+    decided by Legendre's theorem and solved by a search within Holzer's bound
+    (:func:`_legendre_solution`).  (sympy 1.14's ``diop_ternary_quadratic`` is not used: it
+    returns non-solutions, e.g. ``(8, 3, 0)`` for ``-3x^2 + 2xy + 2y^2 + 2xw - 3yw + 2w^2``,
+    and ``None`` for some variable orders of conics that have points, e.g. ``(-8, -6, -4)``.)
+
+    >>> _rational_point(Conic.of([-3, 2, 2, 2, -3, 2])) is not None
+    True
+    >>> _rational_point(Conic.of([1, 0, 1, 0, 0, -3])) is None  # x^2 + y^2 = 3
+    True
+    """
+    M = [[mpq(v) for v in row] for row in conic.matrix()]
+    diagonal, basis = _diagonalise(M)
+    for d, v in zip(diagonal, basis):
+        if d == 0:  # a null vector of the form: a (singular) point
+            return _primitive(v)
+    solution = _legendre_solution(*diagonal)
+    if solution is None:
+        return None
+    point = [sum((x * v[k] for x, v in zip(solution, basis)), mpq(0)) for k in range(3)]
+    point = _primitive(point)
+    if conic(point) != 0:  # cannot happen: the congruence is exact
+        raise ArithmeticError(f"internal error: {point} is not on {conic}")
+    return point
+
+
+def _primitive(v) -> tuple:
+    """A nonzero rational vector scaled to coprime integers (as ``mpq``)."""
     den = 1
-    for c in conic.coefficients:
-        den = den * int(c.denominator) // _gcd(den, int(c.denominator))
-    a, b, c, d, e, f = (int(x * den) for x in conic.coefficients)
-    # sympy 1.14 can return a non-solution for some variable orders (e.g. 2x^2 - y^2 + 2w^2
-    # gives (1, 2, 0)): try every order of the coefficients and keep a verified solution
-    symbols = (X, Y, W)
-    for perm in itertools.permutations(range(3)):
-        renamed = dict(zip(symbols, (symbols[k] for k in perm)))
-        form = (a * X**2 + b * X * Y + c * Y**2 + d * X * W + e * Y * W + f * W**2).xreplace(renamed)
-        sol = diop_ternary_quadratic(form)
-        if sol is None or None in sol or all(v == 0 for v in sol):
-            continue
-        values = dict(zip(symbols, sol))  # sympy answers in the sorted order x1, x2, x3
-        point = tuple(values[renamed[v]] for v in symbols)
-        if a * point[0] ** 2 + b * point[0] * point[1] + c * point[1] ** 2 + d * point[0] * point[2] + e * point[1] * point[2] + f * point[2] ** 2 == 0:
-            return tuple(mpq(int(v)) for v in point)
-    return None
+    for x in v:
+        den = den * int(mpq(x).denominator) // _gcd(den, int(mpq(x).denominator))
+    ints = [int(mpq(x) * den) for x in v]
+    g = 0
+    for x in ints:
+        g = _gcd(g, abs(x))
+    return tuple(mpq(x // g) for x in ints)
+
+
+def _diagonalise(M) -> tuple[list, list]:
+    """``d, V`` with ``V_i^T M V_j = d_i [i == j]`` for the symmetric rational matrix ``M``
+    (symmetric Gaussian elimination, i.e. Lagrange's completion of squares; exact).
+
+    >>> d, V = _diagonalise([[mpq(0), mpq(1), mpq(0)], [mpq(1), mpq(0), mpq(0)], [mpq(0), mpq(0), mpq(3)]])
+    >>> [str(x) for x in d], [[str(x) for x in v] for v in V]
+    (['3', '2', '-1/2'], [['0', '0', '1'], ['1', '1', '0'], ['-1/2', '1/2', '0']])
+    """
+    n = len(M)
+
+    def form(u, v):
+        return sum((u[i] * M[i][j] * v[j] for i in range(n) for j in range(n)), mpq(0))
+
+    rest = [[mpq(int(i == j)) for j in range(n)] for i in range(n)]
+    diagonal, basis = [], []
+    while rest:
+        k = next((i for i, v in enumerate(rest) if form(v, v) != 0), None)
+        if k is None:  # every B(v, v) = 0: B(u + w, u + w) = 2 B(u, w) != 0 for a pair, if any
+            pair = next(((i, j) for i in range(len(rest)) for j in range(i + 1, len(rest)) if form(rest[i], rest[j]) != 0), None)
+            if pair is None:  # the rest spans the radical
+                diagonal += [mpq(0)] * len(rest)
+                basis += rest
+                break
+            i, j = pair
+            rest[i] = [x + y for x, y in zip(rest[i], rest[j])]
+            k = i
+        v = rest.pop(k)
+        vv = form(v, v)
+        rest = [[x - form(w, v) / vv * y for x, y in zip(w, v)] for w in rest]
+        diagonal.append(vv)
+        basis.append(v)
+    return diagonal, basis
+
+
+def _squarefree_split(n: int) -> tuple[int, int]:
+    """``(q, r)`` with ``n = q^2 r`` and ``r`` squarefree (sympy's ``factorint``)."""
+    import sympy
+
+    q, r = 1, 1 if n > 0 else -1
+    for p, e in sympy.factorint(abs(n)).items():
+        q *= p ** (e // 2)
+        r *= p ** (e % 2)
+    return q, r
+
+
+def _legendre_solution(a, b, c):
+    """A nonzero rational solution of ``a x^2 + b y^2 + c z^2 = 0`` (``a, b, c`` nonzero
+    rationals), or ``None`` when there is none.
+
+    The equation is first brought to squarefree, pairwise coprime integer coefficients
+    (each step rescales variables).  Then Legendre's theorem (Ireland & Rosen, *A Classical
+    Introduction to Modern Number Theory*, ch. 17.3, Thm. 1) decides: a solution exists iff
+    the coefficients do not all have one sign and ``-bc``, ``-ca``, ``-ab`` are squares modulo
+    ``|a|``, ``|b|``, ``|c|``.  Holzer's theorem (Mordell, *Diophantine Equations*, ch. 7,
+    Thm. 5; Cremona & Rusin, Math. Comp. 72 (2003) eq. (1)) bounds a solution by
+    ``|x| <= sqrt|bc|, |y| <= sqrt|ca|, |z| <= sqrt|ab|``, so the search below is
+    complete.  :class:`NotSupportedError` if that search exceeds
+    :data:`HOLZER_SEARCH_LIMIT` candidates (never a false "no solution").
+
+    >>> _legendre_solution(mpq(1), mpq(1), mpq(-2)) is not None, _legendre_solution(mpq(1), mpq(1), mpq(-3))
+    (True, None)
+    """
+    import gmpy2
+    import sympy
+
+    coeffs = [mpq(a), mpq(b), mpq(c)]
+    den = 1
+    for x in coeffs:
+        den = den * int(x.denominator) // _gcd(den, int(x.denominator))
+    k = [int(x * den) for x in coeffs]
+    scale = [mpq(1)] * 3  # original variable i = scale[i] * new variable i
+    while True:
+        g = _gcd(_gcd(abs(k[0]), abs(k[1])), abs(k[2]))
+        k = [x // g for x in k]
+        for i in range(3):
+            q, k[i] = _squarefree_split(k[i])
+            scale[i] /= q  # k q^2 y^2 = k (q y)^2
+        pair = next(((i, j) for i, j in ((0, 1), (0, 2), (1, 2)) if _gcd(abs(k[i]), abs(k[j])) > 1), None)
+        if pair is None:
+            break
+        i, j = pair
+        l = 3 - i - j
+        g = _gcd(abs(k[i]), abs(k[j]))
+        # times g: (k_i/g)(g y_i)^2 + (k_j/g)(g y_j)^2 + (g k_l) y_l^2 = 0; |k_0 k_1 k_2| shrinks
+        k[i], k[j], k[l] = k[i] // g, k[j] // g, k[l] * g
+        scale[i] /= g
+        scale[j] /= g
+    if all(x > 0 for x in k) or all(x < 0 for x in k):
+        return None
+    for i in range(3):
+        j, l = (i + 1) % 3, (i + 2) % 3
+        for p in sympy.factorint(abs(k[i])):
+            if p != 2 and gmpy2.legendre(-k[j] * k[l], p) != 1:
+                return None
+    # Holzer search: loop over the two smallest bounds, solve for the third variable
+    bounds = [gmpy2.isqrt(abs(k[(i + 1) % 3] * k[(i + 2) % 3])) for i in range(3)]
+    order = sorted(range(3), key=lambda i: bounds[i])
+    i, j, l = order
+    if (bounds[i] + 1) * (2 * bounds[j] + 1) > HOLZER_SEARCH_LIMIT:
+        raise NotSupportedError(f"conic coefficients too large for the rational-point search (Holzer bounds {list(map(int, bounds))})")
+    for u in range(bounds[i] + 1):  # (x, y, z) and (-x, -y, -z): u >= 0 suffices
+        for v in range(-bounds[j], bounds[j] + 1):
+            if u == 0 and v == 0:
+                continue
+            num = -(k[i] * u * u + k[j] * v * v)
+            if num % k[l]:
+                continue
+            w2 = num // k[l]
+            if w2 >= 0 and gmpy2.is_square(w2):
+                y = [0, 0, 0]
+                y[i], y[j], y[l] = u, v, int(gmpy2.isqrt(w2))
+                return [s * x for s, x in zip(scale, y)]
+    raise ArithmeticError(f"internal error: Legendre's conditions hold for {k} but no solution within Holzer's bound")
 
 
 def parametrize_conic(conic, point=None) -> tuple[list, list, list]:
@@ -594,7 +727,7 @@ def parametrize_conic(conic, point=None) -> tuple[list, list, list]:
     The lines through the point ``P`` (a pencil, parametrized by ``t``) meet the conic in
     one more point, a rational function of ``t`` of degree 2.  ``point`` is Cartesian ``(x, y)`` or
     homogeneous ``(X, Y, W)`` and must lie on the conic; if omitted a rational point is
-    found by Legendre's method (sympy's ``diop_ternary_quadratic``).  A conic without
+    found by Legendre's theorem and Holzer's bound (:func:`_rational_point`).  A conic without
     rational points (e.g. ``x^2 + y^2 = 3``) has no parametrization over Q:
     :class:`NotSupportedError`.
 
