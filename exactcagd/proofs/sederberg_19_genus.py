@@ -30,6 +30,7 @@ from exactcagd.algebra import (
 from exactcagd.algebra.parametrize import translate
 from exactcagd.algebra.resultants import sylvester_matrix
 from exactcagd.proofs import _ledger as L
+from exactcagd.proofs.sederberg_17_resultants import _sylvester_sympy
 from exactcagd.proofs._ledger import claim, erratum, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -37,9 +38,53 @@ x, y, t, a, b, c = sp.symbols("x y t a b c")
 
 
 def _sylvester_res(f, g, var):
+    """Res_var(f, g) = det of Sylvester's matrix written out in sympy (not sympy.resultant: wrong sign in odd/odd cases)."""
     fa = sp.Poly(f, var).all_coeffs()[::-1]
     ga = sp.Poly(g, var).all_coeffs()[::-1]
-    return sp.expand(sp.Matrix(sylvester_matrix(fa, ga)).det())
+    S = _sylvester_sympy(fa, ga)
+    assert S == sp.Matrix(sylvester_matrix(fa, ga))  # exactcagd's matrix is the same
+    return sp.expand(S.det())
+
+
+def _node_kind(f, px, py):
+    """Kind of a double point from the definitions: f = f_x = f_y = 0, Hessian determinant < 0 crunode, > 0 acnode, 0 cusp."""
+    at = {x: px, y: py}
+    assert all(sp.expand(e.subs(at)) == 0 for e in (f, sp.diff(f, x), sp.diff(f, y)))
+    H = sp.hessian(f, (x, y)).subs(at)
+    assert H != sp.zeros(2, 2)  # a double point, not a triple point
+    d = H.det()
+    return "crunode" if d < 0 else "acnode" if d > 0 else "cusp"
+
+
+def _genus_sympy(f):
+    """(n-1)(n-2)/2 - sum m(m-1)/2 over the projective singular points, all checked ordinary (sympy, from the definitions).
+
+    Singular points: common zeros of F, F_x, F_y, F_z of the homogenized F in the charts z = 1, (x : 1 : 0), (1 : 0 : 0);
+    each is translated to the origin of an affine chart, its multiplicity m is the lowest degree present and its tangent
+    cone (the lowest form) must be square-free (m distinct tangents), so that it counts m(m-1)/2 double points.
+    """
+    z = sp.Symbol("z")
+    n = sp.Poly(f, x, y).total_degree()
+    F = sp.expand(sp.Poly(f, x, y).homogenize(z).as_expr())
+    grads = [sp.diff(F, v) for v in (x, y, z)]
+    points = [(px, py, 1) for px, py in ((d[x], d[y]) for d in sp.solve([F.subs(z, 1)] + [g.subs(z, 1) for g in grads], [x, y], dict=True))]
+    points += [(d[x], 1, 0) for d in sp.solve([F.subs({y: 1, z: 0})] + [g.subs({y: 1, z: 0}) for g in grads], [x], dict=True)]
+    if all(sp.expand(e.subs({x: 1, y: 0, z: 0})) == 0 for e in [F] + grads):
+        points.append((1, 0, 0))
+    delta = 0
+    for pt in points:
+        chart = next(k for k in range(3) if pt[k] != 0)  # dehomogenize where the point's coordinate is 1 (after scaling)
+        scaled = [sp.nsimplify(c / pt[chart]) for c in pt]
+        others = [v for k, v in enumerate((x, y, z)) if k != chart]
+        u1, u2 = sp.symbols("u1 u2")
+        sub = {(x, y, z)[chart]: 1}
+        sub.update({others[0]: u1 + scaled[(x, y, z).index(others[0])], others[1]: u2 + scaled[(x, y, z).index(others[1])]})
+        g = sp.Poly(sp.expand(F.subs(sub, simultaneous=True)), u1, u2)
+        m = min(sum(mono) for mono in g.monoms())
+        cone = sum(c * u1**i * u2**j for (i, j), c in g.terms() if i + j == m)
+        assert all(k == 1 for _, k in sp.sqf_list(cone)[1]), f"non-ordinary singular point {pt}"
+        delta += m * (m - 1) // 2
+    return sp.Rational((n - 1) * (n - 2), 2) - delta
 
 
 # ---------------------------------------------------------------- 19.1
@@ -49,7 +94,12 @@ def genus_formula():
     assert genus(x**3 + 9 * x**2 - 12 * y**2) == 0  # one crunode
     assert genus(y**2 - x**3 - x - 1) == 1  # smooth cubic
     assert genus((x**2 + y**2) ** 2 + 3 * x**2 * y - y**3) == 0  # ordinary triple point: delta = 3
-    return verified("line, ellipse, nodal cubic: 0; smooth cubic: 1; quartic with an ordinary triple point: 0")
+    examples = {2 * x - 3 * y + 1: 0, x**2 + 3 * y**2 - 5: 0, x**3 + 9 * x**2 - 12 * y**2: 0, y**2 - x**3 - x - 1: 1,
+                (x**2 + y**2) ** 2 + 3 * x**2 * y - y**3: 0}
+    assert all(_genus_sympy(f) == g_ == genus(f) for f, g_ in examples.items())
+    return verified("line, ellipse, nodal cubic: 0; smooth cubic: 1; quartic with an ordinary triple point: 0",
+        compared="printed g = (n-1)(n-2)/2 - d vs the genus computed in sympy from the definitions (projective singular points, each ordinary, m(m-1)/2 double points) for a line, an ellipse, the nodal cubic, a smooth cubic and the quartic with a triple point; exactcagd's genus agrees",
+        reference='sympy')
 
 
 @claim(DOC, "19.1", "maximal double points", "a rational curve of degree n has (n-1)(n-2)/2 double points (the most an irreducible curve can have)")
@@ -69,8 +119,11 @@ def reducible_examples():
     assert sp.factor(x * y + x + y + 1) == (x + 1) * (y + 1)
     sps = singular_points(x * y + x + y + 1, include_infinity=False)
     assert [(str(p.point[0]), str(p.point[1]), p.kind) for p in sps] == [("-1", "-1", "crunode")]
+    assert _node_kind(x * y + x + y + 1, -1, -1) == "crunode"
     assert len(sp.factor_list((x**2 + y**2 - 1) * (x**2 + y**2 - 4))[1]) == 2
-    return verified("factorizations; the intersection point of the two lines is a crunode")
+    return verified("factorizations; the intersection point of the two lines is a crunode",
+        compared='printed factorizations vs sympy factor / factor_list; the double point (-1, -1) vs f = f_x = f_y = 0 and a negative Hessian determinant (crunode) in sympy',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 19.2
@@ -83,7 +136,10 @@ def line_test():
     assert mult == 2 and sp.expand(cone - (a * b + 3 * b**2)) == 0
     assert cone.subs({a: 1, b: 0}) == 0 and cone.subs({a: -3, b: 1}) == 0
     assert [p.kind for p in singular_points(f, include_infinity=False)] == ["crunode"]
-    return verified("section polynomial, multiplicity 2, two real tangent directions")
+    assert _node_kind(f, 0, 0) == "crunode"
+    return verified("section polynomial, multiplicity 2, two real tangent directions",
+        compared='printed section polynomial and tangent directions vs sympy substitution x = at, y = bt; crunode vs f = f_x = f_y = 0 and a negative Hessian determinant at the origin',
+        reference='sympy')
 
 
 @claim(DOC, "19.2", "crunode example", "x^3 + 9x^2 - 12y^2 = 0 is the Bézier curve (3,3), (-13,-15), (-13,15), (3,-3)")
@@ -94,7 +150,10 @@ def crunode_bezier():
     assert implicitize(cur).as_expr() == x**3 + 9 * x**2 - 12 * y**2
     kinds = [(p.kind, str(p.point[0]), str(p.point[1])) for p in singular_points(x**3 + 9 * x**2 - 12 * y**2, include_infinity=False)]
     assert kinds == [("crunode", "0", "0")]
-    return verified("substitution (sympy) and implicitize(); crunode at the origin")
+    assert _node_kind(x**3 + 9 * x**2 - 12 * y**2, 0, 0) == "crunode"
+    return verified("substitution (sympy) and implicitize(); crunode at the origin",
+        compared='printed x^3 + 9x^2 - 12y^2 vs sympy substitution of the Bernstein parametrization; crunode vs a negative Hessian determinant at the singular origin (sympy)',
+        reference='sympy')
 
 
 @claim(DOC, "19.2", "cusp, acnode", "x^3 - 3y^2 has a cusp (identical tangents), x^3 - 3x^2 - 3y^2 an acnode (complex tangents) at the origin")
@@ -106,7 +165,10 @@ def cusp_acnode():
     assert sp.discriminant(sp.expand(cone2.subs(b, 1)), a) < 0
     assert [p.kind for p in singular_points(x**3 - 3 * y**2, False)] == ["cusp"]
     assert [p.kind for p in singular_points(x**3 - 3 * x**2 - 3 * y**2, False)] == ["acnode"]
-    return verified("tangent cones -3b^2 (double line) and -3a^2 - 3b^2 (no real line)")
+    assert _node_kind(x**3 - 3 * y**2, 0, 0) == "cusp" and _node_kind(x**3 - 3 * x**2 - 3 * y**2, 0, 0) == "acnode"
+    return verified("tangent cones -3b^2 (double line) and -3a^2 - 3b^2 (no real line)",
+        compared='printed cusp / acnode vs the Hessian determinant at the singular origin in sympy (0: double tangent line, > 0: complex tangents)',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 19.3
@@ -125,7 +187,10 @@ def implicit_intersection_resultants():
     assert resultant(_CIRCLE, _HYPER, x) == rx
     pts = [(str(p), str(q)) for p, q in common_points([_CIRCLE, _HYPER])]
     assert pts == [("-5/4", "3/4"), ("-13/12", "5/12"), ("1", "0"), ("5/3", "4/3")]
-    return verified("Sylvester determinants (sympy) as printed; the four points paired exactly")
+    assert all(e.subs({x: sp.Rational(p), y: sp.Rational(q)}) == 0 for p, q in pts for e in (_CIRCLE, _HYPER))
+    return verified("Sylvester determinants (sympy) as printed; the four points paired exactly",
+        compared='printed x- and y-resultants and their roots vs determinants of Sylvester matrices written out in sympy and sympy.roots; the four paired points vs substitution into both curves',
+        reference='sympy')
 
 
 @claim(DOC, "19.3", "Euclid pairing", "x = 5/3: circle gives 16/6 - y^2 = 0, hyperbola 6y^2 - 15y + 28/3 = 0; gcd 3y - 4: point (5/3, 4/3)")
@@ -162,10 +227,14 @@ def quadratic_discriminant():
 def curve_discriminant_claim():
     D = sp.factor(curve_discriminant(x**2 + y**2 - 1))
     assert set(sp.roots(sp.Poly(D, x))) == {1, -1}
+    assert set(sp.roots(sp.Poly(_sylvester_res(x**2 + y**2 - 1, 2 * y, y), x))) == {1, -1}
     f = x**3 + 9 * x**2 - 12 * y**2  # crunode at 0, vertical tangent at x = -9
     D2 = sp.Poly(curve_discriminant(f), x)
     assert set(sp.roots(D2)) == {0, -9}
-    return verified("unit circle: x = +-1; nodal cubic: x = 0 (double point) and x = -9 (vertical tangent)")
+    assert set(sp.roots(sp.Poly(_sylvester_res(f, sp.diff(f, y), y), x))) == {0, -9}
+    return verified("unit circle: x = +-1; nodal cubic: x = 0 (double point) and x = -9 (vertical tangent)",
+        compared='printed roots of Res_y(f, f_y) (vertical tangents, double points) vs the Sylvester determinant written out in sympy and sympy.roots, unit circle and nodal cubic',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 19.5
@@ -190,7 +259,9 @@ def parametrize_cubic_origin():
     pX = -(5 + 6 * t + 7 * t**2) / (1 + 2 * t + 3 * t**2 + 4 * t**3)
     assert sp.simplify(X - pX) == 0 and sp.simplify(Y - t * pX) == 0
     assert sp.simplify(f.subs({x: pX, y: t * pX}, simultaneous=True)) == 0
-    return verified("as printed; vanishes identically (sympy)")
+    return verified("as printed; vanishes identically (sympy)",
+        compared='printed x(t), y = t x(t) vs sympy substitution into the cubic (vanishes identically)',
+        reference='sympy')
 
 
 _F195 = -21 + 46 * x - 13 * x**2 + x**3 + 25 * y - 23 * x * y + 3 * x**2 * y - 9 * y**2 + 3 * x * y**2 + y**3
@@ -207,7 +278,9 @@ def double_point_by_resultants():
     assert sols == [{x: 2, y: 3}]
     sps = singular_points(_F195)
     assert [(p.kind, str(p.point[0]), str(p.point[1])) for p in sps] == [("crunode", "2", "3")]
-    return verified("partials, both resultants (Sylvester, sympy) and the unique solution (2, 3)")
+    return verified("partials, both resultants (Sylvester, sympy) and the unique solution (2, 3)",
+        compared='printed partials, Res_y = 174 - 159x + 36x^2, Res_x = 297 - 207y + 36y^2 and the point (2, 3) vs sympy diff, Sylvester determinants written out in sympy and sympy.solve of f = f_x = f_y = 0',
+        reference='sympy')
 
 
 @claim(DOC, "19.5", "translation and parametrization", "substitution x = t + 2, y = t + 3 gives 2x^2 + x^3 + 7xy + 3x^2y + 6y^2 + 3xy^2 + y^3; x = (2t^3 - t)/(t+1)^3, y = (-3t^3 + 2t^2 + 7t + 3)/(t+1)^3")
@@ -238,10 +311,12 @@ def undetermined():
         assert (n + 1) * (n + 2) // 2 - 1 == (n * n + 3 * n) // 2
     pts = [(1, 0), (0, 1), (-1, 0), (0, -1), (3, 5)]
     C = conic_through_points(pts).as_expr()
-    assert all(C.subs({x: p[0], y: p[1]}) == 0 for p in pts)
+    assert all(C.subs({x: p[0], y: p[1]}) == 0 for p in pts) and sp.Poly(C, x, y).total_degree() == 2
     (ca, cb), r2 = circle_through_points((0, 0), (4, 0), (0, 2))
     A, B, Cc = sp.symbols("A B C")
     sol = sp.solve([A * px + B * py + Cc - (px**2 + py**2) for px, py in ((0, 0), (4, 0), (0, 2))], [A, B, Cc])
     assert (ca, cb) == (sol[A] / 2, sol[B] / 2) and r2 == sol[Cc] + ca**2 + cb**2
     assert all((px - ca) ** 2 + (py - cb) ** 2 == r2 for px, py in ((0, 0), (4, 0), (0, 2)))
-    return verified("counting identity n = 1..6; a conic through 5 points; circle through 3 points (centre (2, 1), r^2 = 5)")
+    return verified("counting identity n = 1..6; a conic through 5 points; circle through 3 points (centre (2, 1), r^2 = 5)",
+        compared='printed count (n^2 + 3n)/2 vs C(n+2, 2) - 1; the conic through five points vs substitution (a non-zero conic); the circle a = A/2, b = B/2, r^2 = C + a^2 + b^2 vs sympy.solve of the linear system and the distances to the three points',
+        reference='sympy')
