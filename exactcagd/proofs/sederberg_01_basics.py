@@ -27,7 +27,10 @@ def dot_and_cross():
     x2, y2, z2 = v
     assert u.cross(v) == sp.Matrix([y1 * z2 - y2 * z1, x2 * z1 - x1 * z2, x1 * y2 - x2 * y1])
     assert b.cross((1, 2, 3), (4, 5, 6)) == (-3, 6, -3) and b.dot((1, 2, 3), (4, 5, 6)) == 32
-    return verified("sympy cross product equals (1.3) componentwise; exact dot/cross on a sample")
+    return verified("sympy cross product equals (1.3) componentwise; exact dot/cross on a sample",
+        compared="printed (1.3) components vs sympy's Matrix.cross on symbolic vectors; exactcagd dot/cross on one sample vs hand values",
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.2", ref="Example (angle)", statement="angle between (1,2,4) and (3,-4,2): cos^-1(3/(sqrt21 sqrt29)) ~ 83.02 deg")
@@ -52,19 +55,28 @@ def angle_example():
 
 @claim(doc="sederberg", section="1.2", ref="Example (projection)", statement="projection of (3,2,1) onto (3,6,6) is 27/81 (3,6,6) = (1,2,2)")
 def projection_example():
-    assert b.dot((3, 2, 1), (3, 6, 6)) == 27 and b.dot((3, 6, 6), (3, 6, 6)) == 81
-    assert b.project((3, 2, 1), (3, 6, 6)) == (1, 2, 2)
-    return verified("exact projection (P.Q / Q.Q) Q")
+    P, Q = sp.Matrix([3, 2, 1]), sp.Matrix([3, 6, 6])
+    assert P.dot(Q) == 27 and Q.dot(Q) == 81 and P.dot(Q) / Q.dot(Q) * Q == sp.Matrix([1, 2, 2])  # sympy, as printed
+    assert tuple(_R(x) for x in b.project((3, 2, 1), (3, 6, 6))) == (1, 2, 2)
+    return verified("exact projection (P.Q / Q.Q) Q",
+        compared="printed 27/81 (3,6,6) = (1,2,2) vs sympy: P.Q, Q.Q and (P.Q / Q.Q) Q of the printed vectors; exactcagd's project() on the same",
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.2", ref="(1.4) Example", statement="triangle (1,1,1),(2,4,5),(3,2,6): (1,3,4)x(2,1,5) = (11,3,-5), Area = sqrt(155)/2 ~ 6.225")
 def triangle_example():
-    p1, p2, p3 = (1, 1, 1), (2, 4, 5), (3, 2, 6)
-    assert b.relative(p2, p1) == (1, 3, 4) and b.relative(p3, p1) == (2, 1, 5)
-    assert b.cross((1, 3, 4), (2, 1, 5)) == (11, 3, -5)
-    area = b.triangle_area(p1, p2, p3)
+    p1, p2, p3 = (sp.Matrix(p) for p in ((1, 1, 1), (2, 4, 5), (3, 2, 6)))
+    # sympy, from the printed vertices
+    assert p2 - p1 == sp.Matrix([1, 3, 4]) and p3 - p1 == sp.Matrix([2, 1, 5])
+    normal = (p2 - p1).cross(p3 - p1)
+    assert normal == sp.Matrix([11, 3, -5]) and sp.sqrt(normal.dot(normal)) / 2 == sp.sqrt(155) / 2
+    area = b.triangle_area((1, 1, 1), (2, 4, 5), (3, 2, 6))
     assert sp.simplify(_R(area) - sp.sqrt(155) / 2) == 0 and abs(float(area) - 6.225) < 5e-4
-    return verified(f"exact area {area} = {float(area):.6f}")
+    return verified(f"exact area {area} = {float(area):.6f}",
+        compared="printed (1,3,4) x (2,1,5) = (11,3,-5) and Area = sqrt(155)/2 ~ 6.225 vs sympy Matrix differences, cross product and sqrt(n.n)/2 of the printed vertices; exactcagd's triangle_area on the same",
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.1", ref="Heron's formula", statement="Area = sqrt(s(s-l1)(s-l2)(s-l3)), s = (l1+l2+l3)/2")
@@ -77,7 +89,10 @@ def heron_formula():
     # and against the cross-product area (1.4) on the example triangle
     sq = [b.length_squared(b.relative(x, y)) for x, y in (((2, 4, 5), (1, 1, 1)), ((3, 2, 6), (2, 4, 5)), ((1, 1, 1), (3, 2, 6)))]
     assert b.heron_area_squared(*sq) == b.triangle_area_squared((1, 1, 1), (2, 4, 5), (3, 2, 6)) == mpq(155, 4)
-    return verified("Heron's product expands to (4 a^2 b^2 - (a^2 + b^2 - c^2)^2)/16; equals (1.4) on the example")
+    return verified("Heron's product expands to (4 a^2 b^2 - (a^2 + b^2 - c^2)^2)/16; equals (1.4) on the example",
+        compared='printed Heron formula vs sympy expansion against (4 a^2 b^2 - (a^2 + b^2 - c^2)^2)/16; on the example triangle Heron equals the cross-product area (1.4) = 155/4 (squared)',
+        reference='sympy',
+    )
 
 
 def _trace_rotation():
@@ -102,16 +117,25 @@ def _trace_rotation():
 @claim(doc="sederberg", section="1.3", ref="Example (1.10)", statement="rotate (5,7,3) by 90 deg about axis (2,1,2) through (1,1,1): C = (5,3,5), u = (0,4,-2), v = (-10/3,4/3,8/3), r = v",
        trace=_trace_rotation)
 def rotation_example():
-    n = (mpq(2, 3), mpq(1, 3), mpq(2, 3))
-    C = tuple(bi + 6 * ni for bi, ni in zip((1, 1, 1), n))
-    assert b.dot(b.relative((5, 7, 3), (1, 1, 1)), n) == 6 and C == (5, 3, 5)
-    u = b.relative((5, 7, 3), C)
-    assert u == (0, 4, -2)
-    assert b.cross(n, u) == (mpq(-10, 3), mpq(4, 3), mpq(8, 3))
+    # the printed intermediates, recomputed in sympy from (1.6)-(1.10)
+    P, B, n = sp.Matrix([5, 7, 3]), sp.Matrix([1, 1, 1]), sp.Matrix([2, 1, 2]) / 3
+    assert (P - B).dot(n) == 6
+    C = B + (P - B).dot(n) * n
+    assert C == sp.Matrix([5, 3, 5])
+    u = P - C
+    assert u == sp.Matrix([0, 4, -2])
+    v = n.cross(u)
+    assert v == sp.Matrix([sp.Rational(-10, 3), sp.Rational(4, 3), sp.Rational(8, 3)])
+    # independent reference for the result: Rodrigues' rotation matrix cos I + sin [n]_x + (1 - cos) n n^T at 90 deg
+    K = sp.Matrix([[0, -n[2], n[1]], [n[2], 0, -n[0]], [-n[1], n[0], 0]])
+    rodrigues = B + (K + n * n.T) * (P - B)
+    assert rodrigues == C + v == sp.Matrix([sp.Rational(5, 3), sp.Rational(13, 3), sp.Rational(23, 3)])
     result = b.rotate_about_axis((5, 7, 3), (1, 1, 1), (2, 1, 2), 0, 1)
-    ref = b.rotate_about_axis_sympy((5, 7, 3), (1, 1, 1), (2, 1, 2), sp.pi / 2)
-    assert tuple(_R(x) for x in result) == ref == (sp.Rational(5, 3), sp.Rational(13, 3), sp.Rational(23, 3))
-    return verified(f"all printed intermediates reproduced; P' = C + r = {tuple(str(x) for x in result)} (not printed), equal to the sympy rotation")
+    assert sp.Matrix([_R(x) for x in result]) == rodrigues
+    return verified(f"all printed intermediates reproduced; P' = C + r = {tuple(str(x) for x in result)} (not printed), equal to the sympy rotation",
+        compared="printed C = (5,3,5), u = (0,4,-2), v = (-10/3,4/3,8/3) vs sympy evaluation of (1.6)-(1.10); the rotated point C + v vs Rodrigues' rotation matrix (sympy) at 90 deg; exactcagd's rotate_about_axis on the same",
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.3", ref="after (1.8)", statement="Then, r is computed using equation (3.1)")
@@ -154,17 +178,25 @@ def rotation_matrix_form():
     assert all(sp.cancel(e) == 0 for e in (mat_form - vec_form))
     # (1.16): u_x = x(1 - nx^2) - y nx ny - z nx nz + (B.n) nx - B_x
     assert sp.cancel(u[0] - (x * (1 - nx**2) - y * nx * ny - z * nx * nz + Bn * nx - Bx)) == 0
-    return verified("M (x,y,z,1)^T equals C + u cos + v sin identically for every unit n (rational parametrization of the sphere) and symbolic B, theta")
+    return verified("M (x,y,z,1)^T equals C + u cos + v sin identically for every unit n (rational parametrization of the sphere) and symbolic B, theta",
+        compared='printed matrix M of (1.11)-(1.27) applied to (x, y, z, 1) vs the vector form C + u cos + v sin in sympy (cancel), for a symbolic unit n (rational sphere parametrization), symbolic B and theta; (1.16) likewise',
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.5.1", ref="(1.35), Fig. 1.8.b", statement="with P0 at t0 = 1 and P1 at t1 = 4, t = 2 is one third of the way from P0 to P1")
 def affine_line_example():
+    P0, P1 = sp.Matrix([0, 0]), sp.Matrix([3, 6])
+    assert sp.Rational(2 - 1, 4 - 1) == sp.Rational(1, 3) and P0 + sp.Rational(1, 3) * (P1 - P0) == sp.Matrix([1, 2])
     p = b.affine_point((0, 0), 1, (3, 6), 4, 2)
-    assert p == (1, 2)
+    assert tuple(_R(x) for x in p) == (1, 2)
     g, a_, be = sp.symbols("gamma alpha beta")
     Pa, Pb = sp.symbols("P_a P_b")
     assert sp.simplify(Pa + (g - a_) / (be - a_) * (Pb - Pa) - ((be - g) * Pa + (g - a_) * Pb) / (be - a_)) == 0
-    return verified("P(2) = P0 + (P1 - P0)/3; the two forms of P(gamma) agree symbolically")
+    return verified("P(2) = P0 + (P1 - P0)/3; the two forms of P(gamma) agree symbolically",
+        compared="printed 'one third of the way' vs sympy: (2 - 1)/(4 - 1) and P0 + (P1 - P0)/3; the two printed forms of P(gamma) agree symbolically",
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.5.2", ref="line through two points", statement="|X Y W; X1 Y1 W1; X2 Y2 W2| = (Y1W2 - Y2W1) X + (X2W1 - X1W2) Y + (X1Y2 - X2Y1) W")
@@ -174,7 +206,10 @@ def line_determinant():
     assert sp.expand(det - ((Y1 * W2 - Y2 * W1) * X + (X2 * W1 - X1 * W2) * Y + (X1 * Y2 - X2 * Y1) * W)) == 0
     line = b.line_through((1, 2, 1), (3, 1, 2))
     assert line((1, 2)) == 0 and line((mpq(3, 2), mpq(1, 2))) == 0
-    return verified("cofactor expansion equals the printed line; exact line_through on homogeneous points")
+    return verified("cofactor expansion equals the printed line; exact line_through on homogeneous points",
+        compared="printed line coefficients vs sympy's 3 x 3 determinant expanded symbolically",
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.5.3", ref="normalized line", statement="with a'^2 + b'^2 = 1, f(x,y) is the signed distance of (x,y) to the line; |c'| is the distance of the origin")
@@ -188,7 +223,10 @@ def normalized_line_distance():
     assert sp.simplify(dist2 - f**2 / (a_**2 + b_**2)) == 0
     line = b.Line(3, 4, -10)
     assert b.signed_distance((0, 0), line) == -2 and b.distance_squared_to_line((3, 4), line) == 225 / mpq(25)
-    return verified("squared distance to the foot point is f^2/(a^2+b^2) symbolically")
+    return verified("squared distance to the foot point is f^2/(a^2+b^2) symbolically",
+        compared='printed signed-distance claim vs sympy: squared distance to the perpendicular foot point equals f^2/(a^2 + b^2), symbolically',
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.6", ref="discriminant", statement="b^2 - 4ac > 0: hyperbola (two real points at infinity), = 0: parabola, < 0: ellipse")
@@ -206,9 +244,14 @@ def conic_discriminant():
         distinct = len(set(roots)) + (1 if at_y0 else 0)
         kind = b.classify_conic((a_, b_, c_, 1, 1, 1)).split()[-1]
         expected = "hyperbola" if (real == 2 and distinct == 2) else ("parabola" if real == 2 else "ellipse")
-        assert kind == expected, (a_, b_, c_)
+        disc = b_ * b_ - 4 * a_ * c_
+        printed_rule = "hyperbola" if disc > 0 else ("parabola" if disc == 0 else "ellipse")
+        assert printed_rule == expected and kind == expected, (a_, b_, c_)
         count += 1
-    return verified_range("all (a, b, c) in [-3, 3]^3", f"{count} quadratic parts: real points at infinity counted by sympy agree with the discriminant rule")
+    return verified_range("all (a, b, c) in [-3, 3]^3", f"{count} quadratic parts: real points at infinity counted by sympy agree with the discriminant rule",
+        compared="printed rule (sign of b^2 - 4ac) vs the real points at infinity of a X^2 + b XY + c Y^2, counted with multiplicity by sympy's real_roots, for all 342 (a, b, c) in [-3, 3]^3; exactcagd's classify_conic agrees",
+        reference='sympy',
+    )
 
 
 @claim(doc="sederberg", section="1.6.1", ref="parametric discriminant", statement="d1^2 - 4 d0 d2 > 0: hyperbola, < 0: ellipse, = 0: parabola")
@@ -216,6 +259,7 @@ def parametric_conic_discriminant():
     import random
 
     rng = random.Random(6)
+    xs, ys = sp.symbols("x y")
     checked = 0
     for _ in range(150):
         X, Y, W = ([rng.randint(-3, 3) for _ in range(3)] for _ in range(3))
@@ -227,7 +271,19 @@ def parametric_conic_discriminant():
         d0, d1, d2 = W
         disc = d1 * d1 - 4 * d0 * d2
         expected = "hyperbola" if disc > 0 else ("parabola" if disc == 0 else "ellipse")
-        assert b.classify_conic(con) == expected
+        # independent reference: implicitize by the Sylvester determinant (sympy) of X(t) - x W(t), Y(t) - y W(t)
+        # and classify by the implicit discriminant b^2 - 4ac of its quadratic part
+        f = [X[k] - xs * W[k] for k in range(3)]
+        g = [Y[k] - ys * W[k] for k in range(3)]
+        syl = sp.Matrix([[f[2], f[1], f[0], 0], [0, f[2], f[1], f[0]], [g[2], g[1], g[0], 0], [0, g[2], g[1], g[0]]])
+        implicit = sp.Poly(sp.expand(syl.det()), xs, ys)
+        assert implicit.total_degree() == 2
+        A_, B_, C_ = (implicit.coeff_monomial(mono) for mono in (xs**2, xs * ys, ys**2))
+        idisc = B_ * B_ - 4 * A_ * C_
+        assert sp.sign(idisc) == sp.sign(disc) and b.classify_conic(con) == expected
         checked += 1
     return verified_range("150 random integer parametrizations with entries in [-3, 3]",
-                          f"{checked} non-degenerate conics: implicitized exactly, implicit and parametric discriminants agree")
+                          f"{checked} non-degenerate conics: implicitized exactly, implicit and parametric discriminants agree",
+        compared="printed rule (sign of d1^2 - 4 d0 d2) vs the implicit discriminant of the conic implicitized by a sympy Sylvester determinant of X(t) - x W(t), Y(t) - y W(t); exactcagd's classify_conic agrees",
+        reference='sympy',
+    )
