@@ -368,7 +368,11 @@ def real_roots(coeffs, lo=None, hi=None) -> list[tuple[RealAlgebraic, int]]:
     -------
     list of (RealAlgebraic, multiplicity), sorted increasingly.
     """
-    poly = integer_poly(coeffs)
+    return _real_roots_of(integer_poly(coeffs), lo, hi)
+
+
+def _real_roots_of(poly: flint.fmpz_poly, lo=None, hi=None) -> list[tuple[RealAlgebraic, int]]:
+    """:func:`real_roots` of a nonzero integer polynomial."""
     lo = None if lo is None else to_rational(lo)
     hi = None if hi is None else to_rational(hi)
     if poly.degree() <= 0:
@@ -400,7 +404,16 @@ def real_roots_bernstein(coeffs, lo=0, hi=1) -> list[tuple[RealAlgebraic, int]]:
     """Real roots in ``[lo, hi]`` of a polynomial given by Bernstein coefficients on [0, 1]."""
     import numpy as np
 
-    from .bernstein import as_coefficients, to_power
+    from .bernstein import as_coefficients, binomial, scaled_to_power, to_power
 
     c = coeffs if isinstance(coeffs, np.ndarray) else as_coefficients(coeffs)
+    if c.dtype == object and all(type(x) is _MPQ for x in c):
+        # Bernstein -> power form in flint (scaled form, one Taylor shift: notes 3.3), no mpq arrays
+        n = len(c) - 1
+        power = scaled_to_power(flint.fmpq_poly([flint.fmpq(int(x.numerator), int(x.denominator)) * binomial(n, i) for i, x in enumerate(c)]), n)
+        if power == 0:
+            raise InputError("the zero polynomial has every number as a root")
+        num = power.numer()
+        num = num // num.content() if num.content() != 1 else num
+        return _real_roots_of(-num if num.coeffs()[-1] < 0 else num, lo, hi)
     return real_roots(list(to_power(c)), lo, hi)
