@@ -45,8 +45,12 @@ def cubic_partition_of_unity():
     assert list(power) == [1, 0, 0, 0]
     assert sp.expand((1 - t_) ** 3 + 3 * t_ * (1 - t_) ** 2 + 3 * t_**2 * (1 - t_) + t_**3) == 1
     for n in range(0, 9):
+        assert sp.expand(sum(sp.binomial(n, i) * (1 - t_) ** (n - i) * t_**i for i in range(n + 1))) == 1
         assert list(bz.to_power(bz.as_coefficients([1] * (n + 1)))) == [1] + [0] * n
-    return verified_range("degrees 0..8", "Bernstein coefficients all 1 convert to the power form 1 (exactcagd to_power); sympy expands the printed cubic sum to 1")
+    return verified_range("degrees 0..8", "sympy expands sum_i C(n,i) (1-t)^(n-i) t^i to 1; Bernstein coefficients all 1 convert to the power form 1 (exactcagd to_power); sympy expands the printed cubic sum to 1",
+        compared="printed (2.1) vs sympy expansion of the cubic sum (and of sum_i C(n,i) (1-t)^(n-i) t^i for n <= 8) to 1; exactcagd's to_power of all-ones Bernstein coefficients agrees",
+        reference='sympy',
+    )
 
 
 @claim(DOC, "2.1", "(2.2)", "P(t) = sum_i C(n,i) (1-t)^(n-i) t^i P_i")
@@ -58,7 +62,10 @@ def bezier_equation():
         ref = [sp.expand(sum(sp.binomial(n, i) * (1 - t_) ** (n - i) * t_**i * Rs(pts[i][k]) for i in range(n + 1))) for k in range(3)]
         for tq in [mpq(0), mpq(1, 3), mpq(5, 7), mpq(1)]:
             assert tuple(Rs(x) for x in c.evaluate(tq)) == tuple(e.subs(t_, Rs(tq)) for e in ref)
-    return verified_range("degrees 0..5, 3-D random rational points", "de Casteljau evaluation == the printed sum evaluated by sympy")
+    return verified_range("degrees 0..5, 3-D random rational points", "de Casteljau evaluation == the printed sum evaluated by sympy",
+        compared="printed (2.2) sum evaluated by sympy vs exactcagd's de Casteljau evaluation at 4 exact parameters, degrees 0..5",
+        reference='sympy',
+    )
 
 
 # ---------------------------------------------------------------- 2.2
@@ -76,7 +83,10 @@ def arbitrary_interval():
     for tq in [t0, t1, mpq(0), mpq(1, 2), mpq(3, 2)]:
         expected = tuple(e.subs(t_, Rs(tq)) for e in left)
         assert tuple(Rs(x) for x in c.evaluate((tq - t0) / (t1 - t0))) == expected
-    return verified("both printed forms agree (sympy) and equal the [0,1] curve at (t - t0)/(t1 - t0) (exactcagd)")
+    return verified("both printed forms agree (sympy) and equal the [0,1] curve at (t - t0)/(t1 - t0) (exactcagd)",
+        compared='printed (2.3) vs its [0,1]-normalised form expanded by sympy, and vs the [0,1] curve (exactcagd) at (t - t0)/(t1 - t0), 5 exact parameters',
+        reference='sympy',
+    )
 
 
 # ---------------------------------------------------------------- 2.3
@@ -90,7 +100,11 @@ def de_casteljau_subdivision():
         tau = (t1 - t0) / (t2 - t0)
         c = BezierCurve(pts)
         left, right = c.subdivide(tau)
-        levels = bz.de_casteljau_triangle(c.points_array(), tau)
+        # the printed recurrence (2.4), written out here (exact rationals)
+        levels = [[[mpq(x) for x in p] for p in pts]]
+        while len(levels[-1]) > 1:
+            prev = levels[-1]
+            levels.append([[(1 - tau) * a + tau * b_ for a, b_ in zip(p, q)] for p, q in zip(prev, prev[1:])])
         assert left.control_points == tuple(tuple(lv[0]) for lv in levels)
         assert right.control_points == tuple(tuple(lv[-1]) for lv in reversed(levels))
         assert c.evaluate(tau) == tuple(levels[-1][0])
@@ -103,13 +117,15 @@ def de_casteljau_subdivision():
             expect = [e.subs(t_, ((a + s_ * (b - a)) - T0) / (T2 - T0)) for e in ref]
             assert all(same_rational_function(x, y) for x, y in zip(curve_exprs(piece.control_points, None, s_), expect))
         # tangent: P'(t1) = n/(t2 - t0) (P_1^(n-1) - P_0^(n-1)) -- the printed difference is the direction
-        diff = levels[-2][1] - levels[-2][0]
+        diff = [b_ - a for a, b_ in zip(levels[-2][0], levels[-2][1])]
         deriv = [sp.diff(e, t_).subs(t_, Rs(tau)) / (T2 - T0) for e in ref]
         assert deriv == [Rs(x) * n / (T2 - T0) for x in diff]
     return verified_range(
         "degrees 1..5 (sympy cross-check on 1..3), [t0,t1,t2] = [2, 13/5, 5]",
         "exactcagd subdivision == levels of the printed recurrence == sympy substitution; the printed tangent "
         "P_1^(n-1) - P_0^(n-1) is the tangent direction, the derivative is n/(t2 - t0) times it",
+        compared="printed recurrence (2.4), written out in the row (exact rationals), vs exactcagd's subdivide (left/right points, P(t1)); for degrees 1..3 both pieces vs sympy substitution of the reparametrized curve, and the printed tangent difference vs sympy's derivative",
+        reference='sympy',
     )
 
 
@@ -122,7 +138,10 @@ def de_casteljau_extrapolation():
     assert all(same_rational_function(x, y) for x, y in zip(curve_exprs(left.tolist(), None, s_), [e.subs(t_, 2 * s_) for e in ref]))
     assert all(same_rational_function(x, y) for x, y in zip(curve_exprs(right.tolist(), None, s_), [e.subs(t_, 2 - s_) for e in ref]))
     assert BezierCurve._trusted(left, None) == c.reparametrize(0, 2)
-    return verified("left piece = P over [0,2], right piece = P over [2,1] (reversed), both exact; class API: reparametrize(0, 2)")
+    return verified("left piece = P over [0,2], right piece = P over [2,1] (reversed), both exact; class API: reparametrize(0, 2)",
+        compared='Fig. 2.8 subdivision at tau = 2 vs sympy substitution t = 2s (left) and t = 2 - s (right) of the quadratic',
+        reference='sympy',
+    )
 
 
 # ---------------------------------------------------------------- 2.4
@@ -139,7 +158,10 @@ def elevation_identities():
             B1 = lambda k: sp.binomial(n + 1, k) * t_**k * (1 - t_) ** (n + 1 - k)  # noqa: E731
             assert sp.expand((1 - t_) * Bn - sp.Rational(n + 1 - i, n + 1) * B1(i)) == 0
             assert sp.expand(t_ * Bn - sp.Rational(i + 1, n + 1) * B1(i + 1)) == 0
-    return verified_range("n = 0..7, all i", "exact Bernstein products (exactcagd) and sympy expansion")
+    return verified_range("n = 0..7, all i", "exact Bernstein products (exactcagd) and sympy expansion",
+        compared="printed (2.5), (2.6) vs sympy expansion of (1-t) B_i^n, t B_i^n, n <= 7; exactcagd's Bernstein product agrees",
+        reference='sympy',
+    )
 
 
 @claim(DOC, "2.4", "(2.7)", "P(t) = sum P_i [(1+t) B_i^n(t) + t B_i^n(t)]  (third line of the derivation)")
@@ -167,6 +189,8 @@ def elevation_derivation_sign():
 def elevation_formula_and_cubic_example():
     for n in range(0, 8):
         m = bz.elevate(identity_coefficients(n + 1), 1)  # rows: new points in terms of old ones
+        P = sp.symbols(f"P0:{n + 1}")
+        elevated = []
         for i in range(n + 2):
             alpha = mpq(i, n + 1)
             row = [0] * (n + 1)
@@ -174,14 +198,21 @@ def elevation_formula_and_cubic_example():
                 row[i - 1] += alpha
             if i <= n:
                 row[i] += 1 - alpha
+            elevated.append(sum(Rs(c_) * P[k] for k, c_ in enumerate(row)))
             assert list(m[i]) == row
+        # independent reference: the printed P*_i give the same polynomial (sympy, symbolic points)
+        assert sp.expand(sum(elevated[i] * sp.binomial(n + 1, i) * t_**i * (1 - t_) ** (n + 1 - i) for i in range(n + 2))
+                         - sum(P[i] * sp.binomial(n, i) * t_**i * (1 - t_) ** (n - i) for i in range(n + 1))) == 0
     printed = [[1, 0, 0, 0], ["1/4", "3/4", 0, 0], [0, "2/4", "2/4", 0], [0, 0, "3/4", "1/4"], [0, 0, 0, 1]]
     m3 = bz.elevate(identity_coefficients(4), 1)
     assert [[Q(x) for x in row] for row in printed] == [list(row) for row in m3]
     r = rng(25)
     pts = rand_points(r, 4, 2)
     assert all(same_rational_function(a, b) for a, b in zip(curve_exprs(BezierCurve(pts).elevate(1).control_points), curve_exprs(pts)))
-    return verified_range("n = 0..7 (coefficient matrices) and the printed n = 3 table", f"exactcagd elevation matrix for n = 3: {matrix_str(m3)}")
+    return verified_range("n = 0..7 (coefficient matrices) and the printed n = 3 table", f"exactcagd elevation matrix for n = 3: {matrix_str(m3)}",
+        compared="printed (2.8) alpha_i rule and the n = 3 table vs sympy: the printed P*_i in B^(n+1) expand to the degree-n polynomial with symbolic P_i, n <= 7; exactcagd's elevation matrix equals the printed rows and table",
+        reference='sympy',
+    )
 
 
 # ---------------------------------------------------------------- 2.7
@@ -204,7 +235,10 @@ def hodograph():
     # the cusp example: hodograph of (0,0),(1,1),(0,1),(1,0) vanishes at t = 1/2
     cusp = BezierCurve([[0, 0], [1, 1], [0, 1], [1, 0]])
     assert cusp.derivative().evaluate("1/2") == (0, 0)
-    return verified_range("degrees 1..6, 3-D; interval [1/2, 7/3]", "exactcagd hodograph == sympy diff; a cusp example (0,0),(1,1),(0,1),(1,0) has P'(1/2) = 0")
+    return verified_range("degrees 1..6, 3-D; interval [1/2, 7/3]", "exactcagd hodograph == sympy diff; a cusp example (0,0),(1,1),(0,1),(1,0) has P'(1/2) = 0",
+        compared="printed D_i = n/(t1 - t0)(P_(i+1) - P_i) vs sympy diff of the curve (degrees 1..4 and an interval [1/2, 7/3]); exactcagd's derivative() control points equal the printed ones; cusp example P'(1/2) = 0",
+        reference='sympy',
+    )
 
 
 # ---------------------------------------------------------------- 2.8
@@ -222,7 +256,10 @@ def quadratics_are_planar():
             assert _dot(p, normal) == 0
         x = [e for e in curve_exprs(pts)]
         assert sp.expand(sum(Rs(nk) * (xk - Rs(pts[0][k])) for k, (nk, xk) in enumerate(zip(normal, x)))) == 0
-    return verified_range("5 random 3-D quadratics", "the curve lies in the plane of its control points (exact and sympy)")
+    return verified_range("5 random 3-D quadratics", "the curve lies in the plane of its control points (exact and sympy)",
+        compared='printed planarity claim vs sympy: (P(t) - P0).n expands to 0 with n = (P1 - P0) x (P2 - P0) (exact dot products at 11 parameters too)',
+        reference='sympy',
+    )
 
 
 # ---------------------------------------------------------------- 2.9
@@ -239,7 +276,10 @@ def rational_as_projection():
     ref = [sp.expand(sum(Rs(w[i]) * Rs(pts[i][k]) * sp.binomial(3, i) * t_**i * (1 - t_) ** (3 - i) for i in range(4))) for k in range(2)]
     den = sp.expand(sum(Rs(w[i]) * sp.binomial(3, i) * t_**i * (1 - t_) ** (3 - i) for i in range(4)))
     assert all(same_rational_function(a, b / den) for a, b in zip(c.to_sympy(t_), ref))
-    return verified("exact at 11 parameters; to_sympy equals the printed quotient")
+    return verified("exact at 11 parameters; to_sympy equals the printed quotient",
+        compared='printed homogeneous form vs sympy quotient sum w_i P_i B_i / sum w_i B_i; projection X/Z, Y/Z of the homogeneous polynomial curve at 11 exact parameters',
+        reference='sympy',
+    )
 
 
 @claim(DOC, "2.9.1", "rational de Casteljau / elevation", "de Casteljau and degree elevation act on the homogeneous (3-D) curve; Z gives the weights")
@@ -257,7 +297,10 @@ def rational_subdivision_and_elevation():
     # the weights are the Z coordinates of the subdivided homogeneous curve
     hom_left, _ = bz.subdivide(c.homogeneous(), tau)
     assert left.weights == tuple(hom_left[:, -1])
-    return verified("subdivision at 2/7 and elevation by 2 of a rational cubic == sympy substitution")
+    return verified("subdivision at 2/7 and elevation by 2 of a rational cubic == sympy substitution",
+        compared='2.9.1 claim vs sympy substitution: the pieces of the rational cubic at 2/7 and its elevation by 2 equal the original rational function reparametrized',
+        reference='sympy',
+    )
 
 
 # ---------------------------------------------------------------- 2.15
