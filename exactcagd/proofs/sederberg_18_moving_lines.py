@@ -39,6 +39,27 @@ def _rand_hom(r, n):
     return [(r.randint(-6, 6), r.randint(-6, 6), r.randint(1, 4)) for _ in range(n + 1)]
 
 
+def _printed_product(P, Q):
+    """(18.44) / (18.50) written out: L_k = sum_{i+j=k} C(m,i) C(n,j) P_i x Q_j / C(m+n,k) (sympy)."""
+    m, n = len(P) - 1, len(Q) - 1
+    return [sum((sp.binomial(m, i) * sp.binomial(n, k_ - i) * _V(P[i]).cross(_V(Q[k_ - i])) for i in range(max(0, k_ - n), min(m, k_) + 1)), sp.zeros(3, 1))
+            / sp.binomial(m + n, k_) for k_ in range(m + n + 1)]
+
+
+def _axial_identity_holds(P, M):
+    """P(tau) x P(t) == (t - tau) sum_ij (1-tau)^(n-1-i) tau^i (1-t)^(n-1-j) t^j M_ij (18.56)-(18.58), sympy."""
+    n = len(P) - 1
+    left = [(1 - tau) ** (n - 1 - i) * tau**i for i in range(n)]
+    right = [(1 - t) ** (n - 1 - j) * t**j for j in range(n)]
+    rhs = (t - tau) * sum((left[i] * right[j] * _V(M[i][j]) for i in range(n) for j in range(n)), sp.zeros(3, 1))
+    return (_bern(P, tau).cross(_bern(P, t)) - rhs).applyfunc(sp.expand) == sp.zeros(3, 1)
+
+
+def _sym_line(line):
+    """A MovingLine (power-basis coefficient triples) as a sympy vector in t."""
+    return sum((t**i * _V(c) for i, c in enumerate(line.coeffs)), sp.zeros(3, 1))
+
+
 def _as_sympy_rows(M):
     return [[tuple(int(v) if v.denominator == 1 else sp.Rational(int(v.numerator), int(v.denominator)) for v in e) for e in row] for row in M]
 
@@ -72,7 +93,9 @@ def cross_product_duality():
     assert sp.Matrix(a).cross(sp.Matrix(b)) == sp.Matrix(printed) and tuple(cross(a, b)) == printed
     L = sp.Matrix(a).cross(sp.Matrix(b))
     assert sp.expand(L.dot(sp.Matrix(a))) == 0 and sp.expand(L.dot(sp.Matrix(b))) == 0
-    return verified("definition equals the vector cross product; the result is incident with both inputs (line through points / point on lines)")
+    return verified("definition equals the vector cross product; the result is incident with both inputs (line through points / point on lines)",
+        compared='printed (18.3) components vs sympy Matrix.cross with symbolic vectors; incidence L . P1 = L . P2 = 0 by sympy expansion',
+        reference='sympy')
 
 
 @claim(DOC, "18.1.1", "dual point and line", "1/d is the distance of Point(a,b,c) to the origin; the line from the origin to it is perpendicular to Line(a,b,c)")
@@ -84,7 +107,9 @@ def dual_point_line():
         p2 = sp.Rational(al**2 + be**2, ga**2)  # squared distance of the point (al/ga, be/ga)
         assert d2 * p2 == 1
         assert sp.Matrix([al, be]).dot(sp.Matrix([-be, al])) == 0  # direction of the line ⟂ (al, be)
-    return verified("squared distances multiply to 1; (a, b) is normal to the line (5 random triples)")
+    return verified("squared distances multiply to 1; (a, b) is normal to the line (5 random triples)",
+        compared='printed distance and perpendicularity claims vs exact squared distances and dot products (sympy rationals, 5 random triples)',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 18.2
@@ -112,7 +137,9 @@ def pencil_parameter_line():
         n0, n1 = L0[0] ** 2 + L0[1] ** 2, L1[0] ** 2 + L1[1] ** 2
         # |d0/d1| = |n0|/|n1| <=> (ratio * |n0| / |n1|)^2 = n0 / n1 ... i.e. ratio^2 = 1
         assert sp.simplify(ratio**2) == 1 and n0 > 0 and n1 > 0
-    return verified("angular speed sign = a0 b1 - a1 b0 (symbolic); the parameter line condition gives |d0|/|n0| = |d1|/|n1| (random pencils)")
+    return verified("angular speed sign = a0 b1 - a1 b0 (symbolic); the parameter line condition gives |d0|/|n0| = |d1|/|n1| (random pencils)",
+        compared='printed (18.19)-(18.20) vs the sympy derivative of atan2 (angular speed sign a0 b1 - a1 b0) and sympy.solve of the parameter-line condition for random pencils',
+        reference='sympy')
 
 
 @claim(DOC, "18.2.2", "(18.26)-(18.27)", "L0[t] x L1[t] is a rational quadratic with P0 = L00 x L10, P1 = (L00 x L11 + L01 x L10)/2, P2 = L01 x L11")
@@ -124,7 +151,9 @@ def two_pencils():
     P2 = L["01"].cross(L["11"])
     rhs = P0 * (1 - t) ** 2 + P1 * 2 * (1 - t) * t + P2 * t**2
     assert (lhs - rhs).applyfunc(sp.expand) == sp.zeros(3, 1)
-    return verified("symbolic identity")
+    return verified("symbolic identity",
+        compared='printed (18.26)-(18.27) control points vs sympy expansion of L0[t] x L1[t] with symbolic lines',
+        reference='sympy')
 
 
 @claim(DOC, "18.2.2", "(18.28)-(18.31)", "L00(1-t) + L10 t = 0, L10(1-t) + L11 t = 0; implicit L00 L11 - L01 L10 = 0")
@@ -160,7 +189,9 @@ def quadratic_pencils():
     L1 = P[2].cross(P[0] * (1 - t) + 2 * P[1] * t)
     assert (_bern(P, 0).cross(Pt) - t * L0).applyfunc(sp.expand) == sp.zeros(3, 1)
     assert (_bern(P, 1).cross(Pt) - (1 - t) * L1).applyfunc(sp.expand) == sp.zeros(3, 1)
-    return verified("symbolic in t, k for a random rational quadratic")
+    return verified("symbolic in t, k for a random rational quadratic",
+        compared='printed (18.33)-(18.35) factorization vs sympy expansion of P[k] x P[t] for a random rational quadratic',
+        reference='sympy')
 
 
 @claim(DOC, "18.2.3", "(18.36)-(18.37)", "nomogram: P0Pa = (2w1/w2) P0P1, P2Pb = (2w1/w0) P2P1; t = |PaPq| / |PaP2|")
@@ -176,7 +207,9 @@ def nomogram():
         lam, mu = sp.symbols("lam mu")
         sol = sp.solve(list(pts[0] + lam * (Pp - pts[0]) - (Pa + mu * (pts[2] - Pa))), [lam, mu], dict=True)[0]
         assert sol[mu] == tv
-    return verified("the line P0 P(t) meets Pa P2 at the affine parameter t (two parameters, random weights)")
+    return verified("the line P0 P(t) meets Pa P2 at the affine parameter t (two parameters, random weights)",
+        compared='printed (18.36)-(18.37) construction vs sympy.solve of the line intersection P0 P(t) with Pa P2 (affine parameter = t)',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 18.3
@@ -186,13 +219,16 @@ def moving_line_of_two_points():
     for m, n in ((1, 2), (2, 2), (1, 3)):
         P, Q = _rand_hom(r, m), _rand_hom(r, n)
         L = moving_line_following(P, Q)
+        assert [_V(l) for l in L] == _printed_product(P, Q)
         lhs = _bern(P).cross(_bern(Q))
         assert (lhs - _bern(L)).applyfunc(sp.expand) == sp.zeros(3, 1)
         if (m, n) == (1, 2):
             Pm, Qm = [sp.Matrix(p) for p in P], [sp.Matrix(q) for q in Q]
             printed = [Pm[0].cross(Qm[0]), (2 * Pm[0].cross(Qm[1]) + Pm[1].cross(Qm[0])) / 3, (Pm[0].cross(Qm[2]) + 2 * Pm[1].cross(Qm[1])) / 3, Pm[1].cross(Qm[2])]
             assert [sp.Matrix([sp.Rational(str(v)) for v in l]) for l in L] == printed
-    return verified_range("(m, n) = (1, 2), (2, 2), (1, 3), random points", "sum B_k L_k == P[t] x Q[t] symbolically; (18.47) as printed")
+    return verified_range("(m, n) = (1, 2), (2, 2), (1, 3), random points", "sum B_k L_k == P[t] x Q[t] symbolically; (18.47) as printed",
+        compared="printed (18.44) L_k written out in sympy vs exactcagd's moving_line_following and vs sympy P[t] x Q[t]; (18.47) entries as printed",
+        reference='sympy')
 
 
 @claim(DOC, "18.3.3", "(18.49)-(18.50)", "P_k = sum C(m,i) C(n,j) L0i x L1j / C(m+n,k) (dual of (18.44))")
@@ -201,7 +237,11 @@ def moving_point_of_two_lines():
     L0, L1 = _rand_hom(r, 1), _rand_hom(r, 2)
     P = moving_line_following(L0, L1)
     assert (_bern(L0).cross(_bern(L1)) - _bern(P)).applyfunc(sp.expand) == sp.zeros(3, 1)
-    return verified("pencil x quadratic moving line = cubic curve with the printed control points")
+    printed = _printed_product(L0, L1)  # (18.50) written out
+    assert [_V(p) for p in P] == printed and (_bern(L0).cross(_bern(L1)) - _bern(printed)).applyfunc(sp.expand) == sp.zeros(3, 1)
+    return verified("pencil x quadratic moving line = cubic curve with the printed control points",
+        compared="printed (18.50) P_k written out in sympy vs sympy L0[t] x L1[t] (and exactcagd's moving_line_following)",
+        reference='sympy')
 
 
 @claim(DOC, "18.3.4", "base points", "deg(P x Q) = m + n - r, r = number of common parameters at which P and Q meet")
@@ -216,7 +256,9 @@ def base_points_of_moving_line():
     assert sp.Poly(g, t).degree() == 1 and sp.Poly(g, t).root(0) == sp.Rational(1, 2)
     line = MovingLine.from_bernstein(moving_line_following(P, Q)).remove_base_points()[0]
     assert line.degree == 1 + 2 - 1
-    return verified("a line and a conic through (2, -1) at the same t = 1/2: P x Q has the factor (t - 1/2), degree 3 - 1")
+    return verified("a line and a conic through (2, -1) at the same t = 1/2: P x Q has the factor (t - 1/2), degree 3 - 1",
+        compared='printed degree drop m + n - r vs the sympy gcd (t - 1/2) of the components of P[t] x Q[t] for a line and a conic meeting at t = 1/2',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------- 18.4
@@ -230,7 +272,9 @@ def cubic_axial_identity():
     right = [(1 - t) ** 2, (1 - t) * t, t**2]
     rhs = (t - tau) * sum((left[i] * right[j] * M[i][j] for i in range(3) for j in range(3)), sp.zeros(3, 1))
     assert (_bern(P, tau).cross(_bern(P, t)) - rhs).applyfunc(sp.expand) == sp.zeros(3, 1)
-    return verified("symbolic in t, tau for a random rational cubic")
+    return verified("symbolic in t, tau for a random rational cubic",
+        compared='printed (18.56) matrix vs sympy expansion of P[tau] x P[t] for a random rational cubic',
+        reference='sympy')
 
 
 @claim(DOC, "18.4.1", "(18.57)-(18.58)", "L_ij = sum_{l+m=i+j+1} C(n,l) C(n,m) P_l x P_m")
@@ -274,7 +318,9 @@ def cubic_double_point_pencil():
     assert (lhs - (t - 1) * (t + 1) * sp.Matrix([3 * t, 3, -9 * t])).applyfunc(sp.expand) == sp.zeros(3, 1)
     assert (lhs - (t - 1) * (t + 1) * (sp.Matrix([0, 3, 0]) * (1 - t) + sp.Matrix([3, 3, -9]) * t)).applyfunc(sp.expand) == sp.zeros(3, 1)
     assert CUBIC.evaluate(1) == (3, 0) and CUBIC.evaluate(-1, extrapolate=True) == (3, 0)
-    return verified("symbolic; P(1) = P(-1) = (3, 0)")
+    return verified("symbolic; P(1) = P(-1) = (3, 0)",
+        compared='printed (18.60) factorization vs sympy expansion of P3 x P[t]; P(1) = P(-1) = (3, 0)',
+        reference='sympy')
 
 
 @claim(DOC, "18.4.3", "(18.61)-(18.66)", "matrix of quadratic moving lines; zeroing gives the pencil (0,3,0)(1-t) + (3,3,-9)t with axis -9(3,0,1): double point (3, 0)", trace=_trace_cubic)
@@ -282,13 +328,17 @@ def cubic_zeroing():
     P = homogeneous_control_points(CUBIC)
     M = _as_sympy_rows(moving_line_matrix(P))
     assert M == [[(-3, 0, 0), (-6, 3, 0), (0, 3, 0)], [(-6, 3, 0), (-9, 12, -9), (3, 9, -9)], [(0, 3, 0), (3, 9, -9), (6, 6, -18)]]
+    printed_M = [[(-3, 0, 0), (-6, 3, 0), (0, 3, 0)], [(-6, 3, 0), (-9, 12, -9), (3, 9, -9)], [(0, 3, 0), (3, 9, -9), (6, 6, -18)]]
+    assert _axial_identity_holds([(0, 0, 1), (0, 1, 1), (1, 2, 1), (3, 0, 1)], printed_M)  # (18.61) from the figure's points, sympy
     Z = zeroing_process(P)
     assert _as_sympy_rows(Z.steps[-1])[2] == [(0, 0, 0), (0, 3, 0), (3, 3, -9)]
     pencil = sp.Matrix([0, 3, 0]) * (1 - t) + sp.Matrix([3, 3, -9]) * t
     assert sp.expand(pencil.dot(_bern(P))) == 0
     assert sp.Matrix([0, 3, 0]).cross(sp.Matrix([3, 3, -9])) == sp.Matrix([-27, 0, -9])
     assert double_point_cubic(CUBIC) == (3, 0)
-    return verified("(18.61) and (18.63) reproduced; the pencil follows the curve; axis (3, 0)")
+    return verified("(18.61) and (18.63) reproduced; the pencil follows the curve; axis (3, 0)",
+        compared='printed (18.61) matrix vs the axial identity P(tau) x P(t) = (t - tau) sum ... expanded in sympy; the printed (18.63) pencil vs sympy L . P = 0 and its axis by sympy cross product',
+        reference='sympy')
 
 
 @claim(DOC, "18.4.4", "(18.67)", "4 x 4 matrix of cubic moving lines for the quartic of figure 18.12")
@@ -334,7 +384,9 @@ def quartic_two_quadratics():
     assert ours[2][1:] == rows[0]
     assert [tuple(3 * v for v in e) for e in ours[3][1:]] == rows[1]
     assert Z.degrees == (2, 2)
-    return verified("both printed rows follow the curve; the zeroing process gives row 2 exactly and row 3 / 3")
+    return verified("both printed rows follow the curve; the zeroing process gives row 2 exactly and row 3 / 3",
+        compared="printed (18.68)-(18.69) moving lines vs sympy L . P[t] = 0 for the reconstructed quartic; exactcagd's zeroing gives the same rows",
+        reference='sympy')
 
 
 @claim(DOC, "18.4.4", "(18.70)-(18.73)", "L_Q axial iff 32 tau^3 - 32 tau^2 - 8 tau = 0: tau = 0, (1 +- sqrt 2)/2; double points (2, 0), (1, +-sqrt 2)")
@@ -417,11 +469,18 @@ def general_zeroing():
         assert Z.degrees == ((m, m) if n % 2 == 0 else (m + 1, m))
         for line in Z.lines:
             assert line.follows(X, Y, W)
+        # independent (sympy): both lines follow the Bernstein form, are independent, and have the stated degrees
+        Ls = [_sym_line(line) for line in Z.lines]
+        assert all(sp.expand(L_.dot(_bern(P))) == 0 for L_ in Ls)
+        assert Ls[0].cross(Ls[1]).applyfunc(sp.expand) != sp.zeros(3, 1)
+        assert sorted(max(sp.Poly(c, t).degree() for c in L_) for L_ in Ls) == sorted((m, m) if n % 2 == 0 else (m + 1, m))
         # (18.82): after the first step every remaining row starts with a line through P0
         if n >= 3:
             for row in Z.steps[1][2:]:
                 assert sum(a * b for a, b in zip(row[1], P[0])) == 0
-    return verified_range("n = 2..8, random rational curves", "dimension n at degree n - 1; degrees of the final pair as stated; both follow the curve; (18.82)")
+    return verified_range("n = 2..8, random rational curves", "dimension n at degree n - 1; degrees of the final pair as stated; both follow the curve; (18.82)",
+        compared='printed degrees (m, m), (m+1, m) vs the sympy degrees of the two final moving lines, which follow the Bernstein form (sympy L . P = 0) and are independent; n = 2..8',
+        reference='sympy')
 
 
 @claim(DOC, "18.4.6", "(18.85)-(18.87)", "the 2 x 2 resultant of the two quadratic moving lines is 512(y^4 + 4x^3 + 2xy^2 - 16x^2 - 6y^2 + 16x)", trace=_trace_quartic)
