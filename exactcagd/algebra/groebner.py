@@ -54,6 +54,8 @@ def _check(gens, order):
     if not isinstance(gens, (list, tuple)):
         raise InputError(f"gens: expected a list of sympy Symbols, got {type(gens).__name__}")
     gens = [symbol_input(g, f"gens[{i}]") for i, g in enumerate(gens)]
+    if not gens:
+        raise InputError("gens: at least one generator (a sympy Symbol) is needed")
     if len(set(gens)) != len(gens) or not all(g.is_Symbol for g in gens):
         raise InputError("gens must be distinct symbols")
     return gens
@@ -189,6 +191,11 @@ def normal_form(f, basis, gens, order: str = "lex"):
     basis = [polynomial_input(b, f"basis[{i}]") for i, b in enumerate(basis)]
     f = polynomial_input(f, "f")
     exprs = [b.as_expr() if isinstance(b, sympy.Poly) else b for b in basis]
+    for i, e in enumerate(exprs):
+        domain = sympy.Poly(e, *gens).domain
+        if not (domain.is_ZZ or domain.is_QQ):
+            raise InputError(f"basis[{i}]: coefficients must be rational in {gens}, got domain {domain}")
+    exprs = [e for e in exprs if sympy.expand(e) != 0]  # dividing by 0 is no reduction
     fe = f.as_expr() if isinstance(f, sympy.Poly) else sympy.sympify(f)
     if not exprs:
         return sympy.expand(fe)
