@@ -50,12 +50,8 @@ _MPQ = type(mpq(0))
 def scaled(c) -> flint.fmpq_poly:
     """Scaled Bernstein form of a 1-D coefficient sequence: ``sum C(n,i) c_i x^i``."""
     binomials = _binomials(len(c) - 1)
-    return flint.fmpq_poly([_fmpq_of(x) * binomials[i] for i, x in enumerate(c)])
-
-
-def _fmpq_of(x) -> flint.fmpq:
-    """``x`` as ``fmpq``; ``mpq`` (the stored type of every exact array) without dispatch."""
-    return flint.fmpq(int(x.numerator), int(x.denominator)) if type(x) is _MPQ else _fmpq(x)
+    return flint.fmpq_poly([flint.fmpq(int(x.numerator) * binomials[i], int(x.denominator)) if type(x) is _MPQ else _fmpq(x) * binomials[i]
+                            for i, x in enumerate(c)])
 
 
 def unscaled(p: flint.fmpq_poly, n: int) -> list:
@@ -95,18 +91,20 @@ def _flint_route(net: np.ndarray, curve: np.ndarray) -> np.ndarray:
     dims = net.shape[2]
     result = np.empty((out_degree + 1, dims), dtype=object)
     computed = dims
-    if all(x == 1 for x in net[:, :, -1].flat) and all(x == 1 for x in curve[:, 2]):
+    if all(x == 1 for x in net[:, :, -1].ravel().tolist()) and all(x == 1 for x in curve[:, 2].tolist()):
         # polynomial surface and curve: the weight sum_ij B_i(X, W - X) B_j(Y, W - Y) = W^(l+m) = 1
         computed = dims - 1
         result[:, -1] = mpq(1)
+    rows = net.tolist()  # nested lists: item access without numpy indexing
+    fmpq, mpq_type = flint.fmpq, _MPQ
     for k in range(computed):
         total = flint.fmpq_poly([])
         for j in range(m + 1):
             g = flint.fmpq_poly([])
             for i in range(l + 1):
-                h = net[i, j, k]
+                h = rows[i][j][k]
                 if h:
-                    g += b[i] * _fmpq_of(h)
+                    g += b[i] * (fmpq(int(h.numerator), int(h.denominator)) if type(h) is mpq_type else _fmpq(h))
             if not g.is_zero():
                 total += g * c[j]
         result[:, k] = unscaled(total, out_degree)
