@@ -32,7 +32,8 @@ def homogeneous_lines():
     assert _cross((2, 1, -7), (-1, -1, 5)) == (-2, -3, -1)
     assert _cross((3, 4, 2), (3, 4, 3)) == (4, -3, 0)
     return verified("all four cross products exact; the last is (4, -3, 0) = -(-4, 3, 0), the same homogeneous point "
-                    "at infinity in direction (-4, 3)")
+                    "at infinity in direction (-4, 3)",
+                    compared='the four printed cross products vs exact integer cross products computed in the check (_cross); the last equals -(-4, 3, 0), the same homogeneous point', reference='exact')
 
 
 @claim(doc="sederberg", section="7.3", ref="parabola / unit circle",
@@ -49,7 +50,8 @@ def parabola_circle():
     assert all(abs(p[0] - q[0]) < 6e-5 and abs(p[1] - q[1]) < 6e-5 for p, q in zip(pts, printed))
     return verified("g and its four real roots agree to the printed digits; the points to the printed digits "
                     "(exactcagd.numeric.intersect finds them against four rational quarter arcs: "
-                    "tests/test_numeric_intersection.py::test_notes_7_3_parabola_and_unit_circle)")
+                    "tests/test_numeric_intersection.py::test_notes_7_3_parabola_and_unit_circle)",
+                    compared='printed g(t) vs sympy expansion of x^2 + y^2 - 1; printed roots and points vs sympy real_roots and substitution, rounded to the printed digits', reference='sympy')
 
 
 @claim(doc="sederberg", section="7.3", ref="rational example",
@@ -125,7 +127,8 @@ def curvature_by_contact():
     assert sympy.simplify(kappa.subs({x1: 3, w0: 2, y2: 5}) - sympy.Rational(2 * 2 * 5, 9)) == 0
     assert sympy.simplify(kappa - 2 * w0 * y2 / x1**2).subs({x1: 3, w0: 2, y2: 5, x2: 7, w1: 1}) == 0
     return verified("g expands as printed; the curvature of the rational curve at t = 0 (sympy, sample values "
-                    "x1 = 3, w0 = 2, y2 = 5) equals 2 w0 y2 / x1^2")
+                    "x1 = 3, w0 = 2, y2 = 5) equals 2 w0 y2 / x1^2",
+                    compared='printed g vs sympy expansion of X^2 + Y^2 - 2 rho Y W; printed kappa(0) = 2 w0 y2 / x1^2 vs the sympy curvature formula of the rational curve at t = 0 (sample values)', reference='sympy')
 
 
 @claim(doc="sederberg", section="7.7.6", ref="rational clip conditions",
@@ -173,7 +176,8 @@ def clip_example():
     assert abs(left_clip(-np.array([-40.0, -56.0, -20.0, 96.0, 294.0])) - 40 / 334) < 1e-12
     assert abs(right_clip(-np.array([88.0, 104.0, 116.0, 48.0, -150.0])) - 160.5 / 198) < 1e-12
     return verified("every printed line, point and clip value recomputed exactly; exactcagd.numeric.fatline "
-                    "reproduces .1198 = 40/334 and .8106 = 160.5/198 (rounded safely inward by ~1e-16)")
+                    "reproduces .1198 = 40/334 and .8106 = 160.5/198 (rounded safely inward by ~1e-16)",
+                    compared='every printed line L, point V and clip value v vs exact cross products of the control points in Fraction arithmetic (computed in the check); .1198, .8106 also vs exactcagd.numeric.fatline', reference='exact')
 
 
 def _clipping_widths():

@@ -173,7 +173,7 @@ def unit_roundoff_model():
         f"largest observed |fl - exact| / (eta |exact|): {float(worst[23]):.3f} (d=23), {float(worst[53]):.3f} (d=53); "
         "the bound holds only without underflow: in IEEE binary64 a subnormal result has an absolute error up to "
         "2^-1075 (fl(2^-1074 * 0.5) = 0), which exactcagd.numeric.evaluate adds as a separate absolute term",
-    )
+        compared='printed (13.4)-(13.5) vs exact rational errors |fl(x op y) - x op y| (gmpy2 mpfr rounding at d = 23, 53 bits, measured in mpq) for 2400 random operations; IEEE underflow counterexample fl(2^-1074 * 0.5) = 0', reference='exact')
 
 
 def _affine_fl(t: float, p0: float, p1: float) -> float:
@@ -295,5 +295,5 @@ def chaotic_band():
     return verified(
         "y(t) = (4t-1)^2 (3-2t)(t+5)/3 in Bernstein form at 600 floats within 3e-10 of 1/4: the exact values change "
         f"monotonicity once, the float values chaotically ({'; '.join(report)}); every float value lies within the "
-        "certified radius of the exact value (checked in rational arithmetic)"
-    )
+        "certified radius of the exact value (checked in rational arithmetic)",
+        compared='printed Figure 13.1 behaviour vs exact rational Horner values of y(t) at the same 600 floats: exact values change monotonicity once, float de Casteljau/Horner values > 50 times; every float value lies within its certified radius of the exact value', reference='exact')
