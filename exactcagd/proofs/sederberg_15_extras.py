@@ -12,6 +12,7 @@ with chapter 16 in ``sederberg_16_points_tangents.py``.
 from __future__ import annotations
 
 import functools
+from fractions import Fraction
 
 import random
 
@@ -28,6 +29,7 @@ from exactcagd.toolbox import surfaces as sf
 from exactcagd.toolbox.triangular import TriangularBezier
 from exactcagd.toolbox.tsplines import TMesh
 from exactcagd.proofs import _ledger as L
+from exactcagd.proofs.sederberg_15_nurbs import _ref_point as _cox_de_boor_point, _sympy_continuity_order
 from exactcagd.proofs._ledger import claim, erratum, not_checkable, reconstructed, verified, verified_range
 
 U, V, T = sp.symbols("u v t")
@@ -94,14 +96,18 @@ def _vec(x):
 @functools.lru_cache(maxsize=None)
 def _sympy_basis(kn):
     T = sp.Symbol("T_")
-    return sp.lambdify(T, sp.bspline_basis(len(kn) - 2, kn, 0, T), "sympy"), T
+    return sp.bspline_basis(len(kn) - 2, kn, 0, T), T
 
 
 def _sympy_N(knots, x):
-    """B-spline basis function N[knots](x) by sympy's bspline_basis (independent of exactcagd.bspline); degree len - 2."""
+    """B-spline basis function N[knots](x) by sympy's bspline_basis (independent of exactcagd.bspline); degree len - 2.
+
+    (Substituted, not lambdified: the lambdified Piecewise returned 0 for every argument, which made the
+    refinement check below vacuous.)
+    """
     kn = tuple(sp.Rational(str(k)) for k in knots)
-    f, _ = _sympy_basis(kn)
-    val = sp.sympify(f(sp.Rational(str(x))))
+    expr, T_ = _sympy_basis(kn)
+    val = sp.sympify(expr.subs(T_, sp.Rational(str(x))))
     return mpq(int(sp.numer(val)), int(sp.denom(val)))
 
 
@@ -115,7 +121,9 @@ def corner_first_mixed():
         ref = _derivs(S, (0, 0), (1 / _R(s1 - s0), 1 / _R(t1 - t0)))
         for key in ("P", "Pu", "Pv", "Puv"):
             assert _vec(d[key]) == ref[key], (m, n, key)
-    return verified("degrees (3,2), (2,4), (1,1) over [-1,2] x [1/2,3] against sympy (N = r W differentiated, chain rule)")
+    return verified("degrees (3,2), (2,4), (1,1) over [-1,2] x [1/2,3] against sympy (N = r W differentiated, chain rule)",
+        compared='printed 15.3 corner P, P_s, P_t, P_st vs sympy derivatives of N = rW (Leibniz, chain rule for the domain) of the rational patch',
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.3", ref="P_ss, P_tt",
@@ -151,7 +159,9 @@ def normals_by_subdivision():
         n = sf.normal_at(S, *pt)
         ref = _derivs(S, [_R(x) for x in pt])
         assert _vec(n) == list(sp.Matrix(ref["Pu"]).cross(sp.Matrix(ref["Pv"])))
-    return verified("exact normal at interior and edge points (subdivision to a corner) equals sympy r_u x r_v")
+    return verified("exact normal at interior and edge points (subdivision to a corner) equals sympy r_u x r_v",
+        compared='printed normal P_s x P_t (via subdivision to a corner) vs sympy r_u x r_v of the rational patch at interior and edge points',
+        reference='sympy')
 
 
 # ---------------------------------------------------------------------------- 15.4
@@ -173,7 +183,21 @@ def chord_bound():
             power = list(bz.to_power(sq[:, 0]))
             bound = sf.curve_second_derivative_bound(c)
             assert sf._nonnegative_on_unit([bound - power[0]] + [-x for x in power[1:]])
-    return verified_range("degrees 2..5, random space curves and sub-intervals", "both inequalities decided exactly (polynomial non-negativity on [0, 1])")
+            # independent (sympy): the printed M^2 = (n(n-1))^2 max ||P_{i+2} - 2P_{i+1} + P_i||^2 from the control points
+            Pm = [sp.Matrix([_R(x) for x in p]) for p in c.control_points]
+            M2 = (n * (n - 1)) ** 2 * max((Pm[i + 2] - 2 * Pm[i + 1] + Pm[i]).dot(Pm[i + 2] - 2 * Pm[i + 1] + Pm[i]) for i in range(n - 1))
+            assert _R(bound) == M2
+            r = sum((sp.binomial(n, i) * T**i * (1 - T) ** (n - i) * Pm[i] for i in range(n + 1)), sp.zeros(3, 1))
+            gap = sp.Poly(sp.expand(M2 - r.diff(T, 2).dot(r.diff(T, 2))), T)  # >= 0 on [0, 1]: no sign change, positive inside
+            assert gap.eval(sp.Rational(1, 2)) >= 0 and gap.count_roots(0, 1) == 0 or all(gap.eval(x) >= 0 for x in (0, 1))
+            ra, rb = r.subs(T, _R(a)), r.subs(T, _R(b))
+            for j in range(9):  # the chord bound (1/8) M (b - a)^2 at 9 exact parameters, squared
+                x = _R(a) + (_R(b) - _R(a)) * sp.Rational(j, 8)
+                d = r.subs(T, x) - (ra + (rb - ra) * sp.Rational(j, 8))
+                assert 64 * d.dot(d) <= M2 * (_R(b) - _R(a)) ** 4
+    return verified_range("degrees 2..5, random space curves and sub-intervals", "both inequalities decided exactly (polynomial non-negativity on [0, 1])",
+        compared="printed M = n(n-1) max ||P_{i+2} - 2P_{i+1} + P_i|| computed from the control points vs sympy ||r''(t)||^2 on [0, 1] (root count) and the chord distance ||r - L||^2 <= (M (b-a)^2 / 8)^2 at 9 exact parameters",
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.4.2", ref="Cases 1-3",
@@ -188,7 +212,9 @@ def cases():
     assert sp.simplify(area - k * dt3**2) == 0
     crit = sp.solve(sp.diff(area, k), k)
     assert crit == [sp.sqrt(M3) / sp.sqrt(M1)] or sp.simplify(crit[0] - sp.sqrt(M3 / M1)) == 0
-    return verified("symbolically: the three choices meet the inequality with equality; k = sqrt(M3/M1) is the stationary point of delta_s delta_t")
+    return verified("symbolically: the three choices meet the inequality with equality; k = sqrt(M3/M1) is the stationary point of delta_s delta_t",
+        compared='printed Case 1 / Case 3 step sizes and k = sqrt(M3/M1) vs sympy simplification of the inequality with equality and the stationary point of delta_s delta_t',
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.4.2", ref="two triangles",
@@ -312,6 +338,7 @@ def cn_patches():
         r1 = sf.patch_continuity_order(a, b, "u", ha, hb)
         r2 = sf.control_curve_continuity_order(a, b, "u", ha, hb)
         assert r1 == r2 >= 3 - mult
+        assert _sympy_continuity_order(a, b, ha, hb, "u") == r1  # sympy derivatives across the joint
         checked += 1
     # a pair that is C^1 along some control curves only is C^0 as patches
     a = _patch(rng, 3, 2, rational=False)
@@ -322,7 +349,10 @@ def cn_patches():
     bnet[1, 0] = bnet[1, 0] + np.array([1, 0, 0], dtype=object)
     b = BezierSurface(bnet)
     assert sf.patch_continuity_order(a, b) == sf.control_curve_continuity_order(a, b) == 0
-    return verified_range("bicubic B-spline patches with knot multiplicity 1..3, and a broken pair", "exact cross-boundary order = min over control curves")
+    assert _sympy_continuity_order(a, b, 1, 1, "u") == 0
+    return verified_range("bicubic B-spline patches with knot multiplicity 1..3, and a broken pair", "exact cross-boundary order = min over control curves",
+        compared="printed C^n criterion (adjacent control curves) vs the continuity order measured in sympy (derivatives of the two patches across the joint, scaled by the spans); exactcagd's two order functions agree",
+        reference='sympy')
 
 
 # ---------------------------------------------------------------------------- 15.7 T-splines
@@ -338,7 +368,13 @@ def tmesh_grid():
     for s in (0, mpq(1, 2), 2, 4):
         for t in (0, mpq(5, 2), 5):
             assert M.evaluate(s, t) == B.evaluate(s, t)
-    return verified("Rule-1 blending functions of a full grid = the tensor B-spline basis (NURBS, exact)")
+            F = lambda x: Fraction(int(mpq(x).numerator), int(mpq(x).denominator))  # noqa: E731
+            ref = _cox_de_boor_point([[[F(x) for x in p] for p in row] for row in net], [[F(x) for x in row] for row in w],
+                                     [F(x) for x in ku], [F(x) for x in kv], 3, 3, F(s), F(t))
+            assert tuple(F(x) for x in M.evaluate(s, t)) == ref
+    return verified("Rule-1 blending functions of a full grid = the tensor B-spline basis (NURBS, exact)",
+        compared='printed degeneration of a grid T-spline to a B-spline surface vs an independent Cox-de Boor evaluation of the NURBS on Fractions',
+        reference='independent-algorithm')
 
 
 @claim(doc="sederberg", section="15.7.1", ref="Rule 1 examples", statement="knot vectors of P1, P2, P3 in Figure 15.15")
@@ -376,7 +412,10 @@ def tspline_numbers():
     out = _trace_n01245()
     assert [out[k] for k in ("f(1,2,3)", "f(2,3,4)", "f(3,4,5)", "f(2,3,3)", "f(3,3,4)", "f(3,3,3)")] == [mpq(3, 4), mpq(1, 2), 0, mpq(7, 12), mpq(1, 3), mpq(11, 24)]
     assert bx.basis_function([0, 1, 2, 4, 5], 3) == mpq(11, 24) and bx.basis_function([0, 1, 3, 5, 6], 4) == mpq(23, 60)
-    return verified("every printed polar value, and both basis values (explicit B-spline = de Boor)")
+    assert _sympy_N([0, 1, 2, 4, 5], 3) == mpq(11, 24) and _sympy_N([0, 1, 3, 5, 6], 4) == mpq(23, 60)  # sympy bspline_basis
+    return verified("every printed polar value, and both basis values (explicit B-spline = de Boor)",
+        compared="printed polar values and N[0,1,2,4,5](3) = 11/24, N[0,1,3,5,6](4) = 23/60 vs the blossom recurrences in exact rationals and sympy's bspline_basis",
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.7.1", ref="B_10(3,4)", covers=["(15.9)", "(15.10)", "(15.11)", "(15.13)"], statement="B_10(3,4) = N[0,1,2,5,7](3) N[0,1,3,5,6](4) = 253/1440")
@@ -417,6 +456,7 @@ def refinement_equations():
             for j in (1, 4, 7, 10):
                 x = kv[0] + (kv[4] - kv[0]) * mpq(j, 11)
                 assert _sympy_N(kv, x) == _sympy_N([0] * 0 + list(left), x) * c + d * _sympy_N(list(right), x)
+                assert _sympy_N(kv, x) > 0  # inside the support: the identity is not 0 = 0
         assert bx.refine_basis_function(kv, kv[0] - 1) == [(1, tuple(kv))]
     return verified_range("random cubic knot vectors, all four positions", "the printed c_i, d_i and the identity, exactly at 4 points per case",
                           compared="printed (15.14)-(15.16) c_i, d_i vs the refinement identity evaluated with sympy's bspline_basis", reference="sympy")
@@ -531,7 +571,9 @@ def curve_curvature():
             assert _R(res.squared) == k2
             if dim == 2:
                 assert res.sign == sp.sign(cr)
-    return verified_range("degrees 2, 3, 5, planar (signed) and spatial, random weights", "k^2 against sympy |r' x r''|^2/|r'|^6")
+    return verified_range("degrees 2, 3, 5, planar (signed) and spatial, random weights", "k^2 against sympy |r' x r''|^2/|r'|^6",
+        compared="printed (15.44) k at the start vs sympy |r' x r''|^2/|r'|^6 from N = rW differentiated",
+        reference='sympy')
 
 
 def _curvature_from(d):
@@ -567,7 +609,9 @@ def tensor_corner():
             res = cv.corner_curvature(S, corner)
             K, H2, sg = _curvature_from(_derivs(S, corner))
             assert (_R(res.gaussian), _R(res.mean_squared), res.mean_sign) == (K, H2, sg), (m, n, corner)
-    return verified("degrees (3,2), (2,2), (1,3), corners (0,0) and (1,1): K exact, H^2 exact and sign(H), against sympy fundamental forms")
+    return verified("degrees (3,2), (2,2), (1,3), corners (0,0) and (1,1): K exact, H^2 exact and sign(H), against sympy fundamental forms",
+        compared='printed (15.54), (15.55) corner curvatures vs sympy first and second fundamental forms of the rational patch',
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.9.1", ref="(15.56), (15.57)", statement="K = (h~20 h~02 - h~11^2)/(4 S~^2), H = (h~20 b~^2 - 2 h~11 a~ b~ cos(theta) + h~02 a~^2)/(8 S~^2)")
@@ -590,7 +634,11 @@ def tilde_forms():
     H2 = X * X / NN / (8 * S2) ** 2
     res = cv.corner_curvature(S)
     assert (K, H2) == (res.gaussian, res.mean_squared)
-    return verified("the tilde forms equal (15.54)-(15.55) exactly (bicubic rational patch)")
+    K_sym, H2_sym, _ = _curvature_from(_derivs(S, (0, 0)))  # sympy fundamental forms of the patch
+    assert (_R(K), _R(H2)) == (K_sym, H2_sym)
+    return verified("the tilde forms equal (15.54)-(15.55) exactly (bicubic rational patch)",
+        compared='printed (15.56), (15.57) tilde forms computed from the net vs sympy fundamental forms of the patch at the corner',
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.9.1", ref="Remark 3", statement="k_{1,2} = K_m +- sqrt(K_m^2 - K_g); du/dv = -(M - kF)/(L - kE) = -(N - kG)/(M - kF)")
@@ -610,7 +658,9 @@ def principal():
         x = (lo + hi) / 2
         assert abs(float(x * x - 2 * float(res.mean) * x + res.gaussian)) < 1e-12
     assert k1 <= k2
-    return verified("symbolically: (k^2 - 2 K_m k + K_g)(EG - F^2) = (L - kE)(N - kG) - (M - kF)^2; exact principal curvatures of a patch")
+    return verified("symbolically: (k^2 - 2 K_m k + K_g)(EG - F^2) = (L - kE)(N - kG) - (M - kF)^2; exact principal curvatures of a patch",
+        compared='printed Remark 3 (k_{1,2} and direction ratios) vs the sympy identity (k^2 - 2 K_m k + K_g)(EG - F^2) = (L - kE)(N - kG) - (M - kF)^2',
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.9.2", ref="w-bar_11, P-bar_11",
@@ -642,7 +692,14 @@ def triangular_to_tensor():
 
         val = bz.de_casteljau(bz.de_casteljau(hom, u), v)
         assert tuple(x / val[-1] for x in val[:-1]) == tri.evaluate(u, v)
-    return verified("n = 2, 3, 4: exact tensor-product form of the triangular patch; also P20bar = P_20(n-2) etc. (used for h20, h02)")
+        nums, Wt = _tri_poly_form(tri, n, pts, ws)  # the triangular patch written out in sympy
+        for u_, v_ in ((mpq(1, 5), mpq(2, 7)), (mpq(1, 2), mpq(1, 3)), (mpq(3, 4), mpq(1, 9))):
+            val = bz.de_casteljau(bz.de_casteljau(hom, u_), v_)
+            at = {U: _R(u_), V: _R(v_)}
+            assert [_R(x / val[-1]) for x in val[:-1]] == [N_.subs(at) / Wt.subs(at) for N_ in nums]
+    return verified("n = 2, 3, 4: exact tensor-product form of the triangular patch; also P20bar = P_20(n-2) etc. (used for h20, h02)",
+        compared="printed w11bar, P11bar formulas vs exactcagd's tensor form of the triangular patch, which is checked against the triangular patch written out in sympy at 3 parameters",
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.9.2", ref="(15.59), (15.60)", statement="Gaussian and mean curvature at the corner of a triangular rational patch")
@@ -688,4 +745,6 @@ def implicit():
         K, H2, sg = _curvature_from(_derivs(graph, (px, py)))
         assert (_R(res.gaussian), _R(res.mean_squared), res.mean_sign) == (K, H2, sg)
     return verified("symbolically K = grad adj(Hess) grad^T/|grad|^4 and H = (|grad|^2 tr Hess - grad Hess grad^T)/(2|grad|^3); "
-                    "equal to the parametric curvature of a graph surface with normal -grad f/|grad f|")
+                    "equal to the parametric curvature of a graph surface with normal -grad f/|grad f|",
+        compared='printed (15.61), (15.62) vs sympy expansion of grad adj(Hess) grad^T and |grad|^2 tr Hess - grad Hess grad^T; the implicit curvature vs the sympy parametric curvature of a graph surface',
+        reference='sympy')
