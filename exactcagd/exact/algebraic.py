@@ -310,8 +310,8 @@ def _dyadic_hull(lo: mpq, hi: mpq, k: int) -> tuple[mpq, mpq]:
 def _coarsest_level(lo: mpq, hi: mpq, others: list, first: int = -64, last: int = 4095) -> int:
     """The smallest ``k`` in ``[first, last]`` whose dyadic hull of ``[lo, hi]`` avoids every
     interval in ``others`` (``last`` if none does).  The hulls are nested (a larger ``k``
-    gives a subset), so a walk from the level of the gap finds the same ``k`` as a scan
-    from ``first``, in a few steps instead of up to ~70."""
+    gives a subset), so a search started at the level of the gap finds the same ``k`` as a
+    scan from ``first``, in a few steps instead of up to ~70."""
 
     def separated(k: int) -> bool:
         a, b = _dyadic_hull(lo, hi, k)
@@ -324,20 +324,28 @@ def _coarsest_level(lo: mpq, hi: mpq, others: list, first: int = -64, last: int 
         g = min(gaps, default=None)  # 2^-k about the gap: -log2(g) from bit lengths (no float underflow)
         k = first if g is None else min(last, max(first, 1 + int(g.denominator).bit_length() - int(g.numerator).bit_length()))
     if separated(k):
-        while k > first and separated(k - 1):
-            k -= 1
+        if k > first and separated(k - 1):  # a dyadic point between the roots: bisect down
+            low, high = first, k - 1
+            while low < high:
+                mid = (low + high) // 2
+                if separated(mid):
+                    high = mid
+                else:
+                    low = mid + 1
+            k = low
     else:
         while k < last and not separated(k):
             k += 1
     return k
 
 
-def _isolate_factor(factor: flint.fmpz_poly) -> list[RealAlgebraic]:
+def _isolate_factor(factor: flint.fmpz_poly, window=(None, None)) -> list[RealAlgebraic]:
     """Isolating intervals of the real roots of an irreducible factor.
 
     flint's balls are tight but have huge denominators; each is widened to the
     coarsest dyadic interval that still avoids every other root's ball, so the
-    printed data stay small.
+    printed data stay small.  Roots whose ball lies wholly outside ``window = (lo, hi)``
+    (``None`` = unbounded) are left out (they are not widened).
     """
     if factor.degree() == 1:
         return [RealAlgebraic(factor, 0, 0, _checked=True)]
@@ -347,7 +355,10 @@ def _isolate_factor(factor: flint.fmpz_poly) -> list[RealAlgebraic]:
             mid, rad = _mpq_from_arf(root.real.mid()), _mpq_from_arf(root.real.rad())
             balls.append((mid - rad, mid + rad))
     out = []
+    w_lo, w_hi = window
     for i, (lo, hi) in enumerate(balls):
+        if (w_lo is not None and hi < w_lo) or (w_hi is not None and lo > w_hi):
+            continue
         others = balls[:i] + balls[i + 1 :]
         a, b = _dyadic_hull(lo, hi, _coarsest_level(lo, hi, others))
         if _sign_at(factor, a) * _sign_at(factor, b) >= 0:  # pragma: no cover - flint guarantees
@@ -382,7 +393,7 @@ def _real_roots_of(poly: flint.fmpz_poly, lo=None, hi=None) -> list[tuple[RealAl
     for factor, mult in factors:
         if factor.coeffs()[-1] < 0:
             factor = -factor
-        for r in _isolate_factor(factor):
+        for r in _isolate_factor(factor, (lo, hi)):
             roots.append((r, int(mult)))
     out = []
     for r, m in roots:
