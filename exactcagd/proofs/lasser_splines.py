@@ -27,18 +27,48 @@ def _random_spline_pair(rng, rational: bool):
     surface = BSplineSurface(net, ku, kv, w)
     pts = [[Fr(rng.randint(1, 15), 16), Fr(rng.randint(1, 15), 16)] for _ in range(5)]
     wc = [Fr(rng.randint(1, 6), rng.randint(1, 3)) for _ in range(5)] if rational else None
-    curve = BSplineCurve(pts, [0, 0, 0, Fr(1, 3), Fr(2, 3), 1, 1, 1], wc)
-    return surface, curve
+    kc = [0, 0, 0, Fr(1, 3), Fr(2, 3), 1, 1, 1]
+    curve = BSplineCurve(pts, kc, wc)
+    raw = {"net": net, "ku": ku, "kv": kv, "w": w, "p": p, "q": q, "pts": pts, "kc": kc, "wc": wc}
+    return surface, curve, raw
+
+
+def _basis(knots, degree, x):
+    """Cox-de Boor recursion from the definition (Fractions; 0/0 := 0), for x inside the knot range."""
+    N = [Fr(1) if knots[i] <= x < knots[i + 1] else Fr(0) for i in range(len(knots) - 1)]
+    for d in range(1, degree + 1):
+        nxt = []
+        for i in range(len(knots) - d - 1):
+            a = (x - knots[i]) / (knots[i + d] - knots[i]) * N[i] if knots[i + d] != knots[i] else Fr(0)
+            b = (knots[i + d + 1] - x) / (knots[i + d + 1] - knots[i + 1]) * N[i + 1] if knots[i + d + 1] != knots[i + 1] else Fr(0)
+            nxt.append(a + b)
+        N = nxt
+    return N
+
+
+def _reference_image(raw, t):
+    """F(K(t)) by the Cox-de Boor basis written out here (not exactcagd's evaluators), exact."""
+    Nc = _basis(raw["kc"], 2, t)
+    wc = raw["wc"] or [Fr(1)] * len(raw["pts"])
+    den = sum(n * w for n, w in zip(Nc, wc))
+    u, v = (sum(n * w * pt[k] for n, w, pt in zip(Nc, wc, raw["pts"])) / den for k in range(2))
+    Nu, Nv = _basis(raw["ku"], raw["p"], u), _basis(raw["kv"], raw["q"], v)
+    net = raw["net"]
+    w = raw["w"] or [[Fr(1)] * len(net[0]) for _ in net]
+    terms = [(Nu[i] * Nv[j] * w[i][j], net[i][j]) for i in range(len(net)) for j in range(len(net[0]))]
+    den = sum(c for c, _ in terms)
+    return tuple(sum(c * pt[k] for c, pt in terms) / den for k in range(3))
 
 
 def _check(rational: bool, trials: int, seed: int):
     rng = random.Random(seed)
     pieces = joints = irrational = tight = 0
     for _ in range(trials):
-        surface, curve = _random_spline_pair(rng, rational)
+        surface, curve, raw = _random_spline_pair(rng, rational)
         result = compose_spline(surface, curve)
         for piece in result.pieces:
             t = rational_between(*piece.interval)
+            assert tuple(Fr(str(x)) for x in piece.evaluate(t)) == _reference_image(raw, Fr(str(t)))
             assert piece.evaluate(t) == surface.evaluate(*curve.evaluate(t))
             pieces += 1
             irrational += not piece.exact
