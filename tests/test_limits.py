@@ -311,3 +311,13 @@ def test_every_documented_limit_is_checked_by_some_entry_point():
     for name, call in trips.items():
         with pytest.raises(LimitError, match=name):
             call()
+
+
+def test_a_huge_tolerance_is_met_exactly_not_overflowed():
+    from exactcagd.curves_on_surfaces import approximate
+
+    surface = BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+    domain = BezierCurve([["1/10", "1/10"], ["1/2", "9/10"], ["9/10", "1/5"]])
+    for method in ("parabola", "fit"):
+        result = approximate(surface, domain, 10**5000, method)
+        assert result.distance_bound <= 10**5000

@@ -29,7 +29,7 @@ from gmpy2 import mpq
 from .. import limits
 from ..errors import ExactCAGDError, InputError, NotSupportedError
 from ..exact import bernstein as bz
-from ..exact.scalars import rational_str, to_count, to_rational
+from ..exact.scalars import rational_str, to_count, to_float, to_rational
 from . import approximants as ap
 from .domain import DomainCurve, Joint, positively_parallel
 from .field_curve import _end_derivative, make_curve
@@ -124,7 +124,7 @@ class CurveOnSurface:
             "method": self.method,
             "segments": len(self.segments),
             "degree": self.degree,
-            "tolerance": float(self.tolerance),
+            "tolerance": to_float(self.tolerance),
             "distance_bound": float(self.distance_bound),
             "continuity": self.continuity,
             "max_joint_angle_deg": self.max_joint_angle,
@@ -275,7 +275,7 @@ class _Solver:
         ta, tb = item.span
         if tb - ta < MIN_WIDTH:
             raise ExactCAGDError(
-                f"{self.method}: tolerance {float(self.tol):.3g} not reached before pieces became "
+                f"{self.method}: tolerance {to_float(self.tol):.3g} not reached before pieces became "
                 f"narrower than 2^-48 in the parameter (piece {item.piece}, t ~ {float(ta):.12g})"
             )
         k = item.piece

@@ -53,7 +53,7 @@ from ..composition.distance_bound import distance_bound, sqrt_upper
 from ..composition.fast import compose_homogeneous_fast
 from ..errors import ExactCAGDError, WeightError
 from ..exact import bernstein as bz
-from ..exact.scalars import to_rational
+from ..exact.scalars import to_float, to_rational
 from ..geometry.bezier_curve import BezierCurve
 from .field_curve import make_curve
 
@@ -220,7 +220,7 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
         fctrl = _least_squares(d, s_fit, target_fit, f0, f1)
         err = max(np.linalg.norm(_basis(d, s.tobytes())[0].dot(fctrl) - t, axis=1).max()
                   for s, t in ((s_fit, target_fit), (s_check, target_check)))
-        if not err <= float(tol):  # (also rejects NaN)
+        if not err <= to_float(tol):  # (also rejects NaN; a tol beyond the float range is inf)
             continue
         ctrl = np.empty(fctrl.shape, dtype=object)
         ctrl[1:-1] = np.vectorize(_exact, otypes=[object])(fctrl[1:-1])
@@ -273,7 +273,7 @@ def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segm
                 raise ExactCAGDError(f"fit: more than max_segments = {max_segments} segments needed")
             continue
         if b - a < MIN_WIDTH:
-            raise ExactCAGDError(f"fit: tolerance {float(tol):.3g} not reached on a piece narrower than 2^-40")
+            raise ExactCAGDError(f"fit: tolerance {to_float(tol):.3g} not reached on a piece narrower than 2^-40")
         left, right = bz.subdivide(h, mpq(1, 2))
         mid = tuple(left[-1, :-1] / left[-1, -1])
         m = (a + b) / 2

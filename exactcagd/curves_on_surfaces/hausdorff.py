@@ -49,7 +49,7 @@ from gmpy2 import mpq, mpz
 from ..composition import ball
 from ..exact import bernstein as bz
 from ..exact.quadratic import QuadraticNumber
-from ..exact.scalars import to_rational
+from ..exact.scalars import to_float, to_rational
 
 __all__ = ["hausdorff_bound", "piece_bound", "directed_piece_bound", "ball_piece_bound", "ball_directed_bound", "sqrt_upper", "upper", "float_hausdorff"]
 
@@ -391,7 +391,7 @@ def _unpaired_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
     only needs one window of ``B`` (no monotonicity, no covering of ``B``).
     """
     limit = to_rational(limit, where="limit")
-    if float_hausdorff(hom_a, hom_b, 33) > float(limit) * (1 + 1e-9):
+    if float_hausdorff(hom_a, hom_b, 33) > to_float(limit) * (1 + 1e-9):
         return None
     first = _directed_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
     if first is None:
@@ -469,7 +469,7 @@ def _certify_window(hom_a, hom_b, balls_a, balls_b, piece, windows, limit, stats
 def _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
     limit = to_rational(limit, where="limit")
     hf_a, hf_b = _float_hom(hom_a), _float_hom(hom_b)
-    if float_hausdorff(hom_a, hom_b, 33) > float(limit) * (1 + 1e-9):
+    if float_hausdorff(hom_a, hom_b, 33) > to_float(limit) * (1 + 1e-9):
         return None
     foot = _Footer(hf_b)
 
