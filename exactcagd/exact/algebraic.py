@@ -20,6 +20,8 @@ exactly.
 
 from __future__ import annotations
 
+import math
+
 from functools import total_ordering
 
 import flint
@@ -142,7 +144,8 @@ class RealAlgebraic:
             return self
         if self.hi - self.lo < width:
             return self
-        if width * 256 < self.hi - self.lo:  # more than 8 bisections ahead (not a single halving step)
+        # more than 8 bisections ahead (not a single halving step), and a width a float can bracket
+        if width * 256 < self.hi - self.lo and width > max(abs(self.lo), abs(self.hi)) * mpq(1, 2**48):
             self._bracket_float_root(width)
             if self.hi - self.lo < width:
                 return self
@@ -164,18 +167,16 @@ class RealAlgebraic:
         self.lo, self.hi = mpq(int(lo.p), int(lo.q)), mpq(int(hi.p), int(hi.q))
         return self
 
-    def _bracket_float_root(self, width: mpq) -> None:
-        """Try to jump to an interval of width ``width / 2`` around a float Newton estimate.
-
-        Accepted only when the exact signs at both new ends differ (the old interval
-        isolates the root, so the new one holds it); otherwise nothing changes and
-        bisection does the work.  Saves the ~40 exact bisections to width 1e-12.
-        """
+    def _newton_float(self):
+        """A float Newton estimate of the root inside the isolating interval, or ``None``
+        (left the interval, flat derivative, overflow).  Only a guess: every use checks it
+        with exact signs."""
         try:
             coeffs = [float(c) for c in self.poly.coeffs()]
             deriv = [k * c for k, c in enumerate(coeffs)][1:]
             lo_f, hi_f = float(self.lo), float(self.hi)
             x = (lo_f + hi_f) / 2
+            previous = float("inf")
             for _ in range(60):
                 f = fd = 0.0
                 for c in reversed(coeffs):
@@ -183,22 +184,50 @@ class RealAlgebraic:
                 for c in reversed(deriv):
                     fd = fd * x + c
                 if fd == 0.0:
-                    return
+                    return None
                 step = f / fd
                 x -= step
                 if not lo_f <= x <= hi_f:
-                    return
-                if abs(step) <= 1e-17 * max(abs(x), 1e-300):
-                    break
+                    return None
+                if abs(step) <= 1e-16 * max(abs(x), 1e-300) or abs(step) >= previous:
+                    break  # converged, or stagnating at the float resolution
+                previous = abs(step)
         except (OverflowError, ZeroDivisionError):
+            return None
+        return x
+
+    def _bracket_float_root(self, width: mpq) -> None:
+        """Try to jump to an interval of width ``width / 2`` around a float Newton estimate.
+
+        Accepted only when the exact signs at both new ends differ (the old interval
+        isolates the root, so the new one holds it); otherwise nothing changes and
+        bisection does the work.  Saves the ~40 exact bisections to width 1e-12.
+        """
+        x = self._newton_float()
+        if x is None:
             return
         quarter = width / 4
         a, b = mpq(x) - quarter, mpq(x) + quarter
         if a < self.lo or b > self.hi:
             return
-        s_a, s_b = _sign_at(self.poly, a), _sign_at(self.poly, b)
-        if s_a * s_b < 0:
+        if _sign_at(self.poly, a) * _sign_at(self.poly, b) < 0:
             self.lo, self.hi = a, b
+
+    def _rounded_by_newton(self):
+        """The root correctly rounded to a float, when a float Newton estimate ``x`` is
+        confirmed exactly: the root lies strictly between the midpoints of ``x`` and its
+        float neighbours (then it rounds to ``x``); the interval shrinks to those midpoints.
+        ``None`` when the check fails."""
+        x = self._newton_float()
+        if x is None or x == 0.0 or math.isinf(x):
+            return None
+        exact = mpq(x)
+        a = (exact + mpq(math.nextafter(x, -math.inf))) / 2
+        b = (exact + mpq(math.nextafter(x, math.inf))) / 2
+        if a < self.lo or b > self.hi or _sign_at(self.poly, a) * _sign_at(self.poly, b) >= 0:
+            return None
+        self.lo, self.hi = a, b
+        return x
 
     def interval(self, width=None) -> tuple[mpq, mpq]:
         """The isolating interval, refined below ``width`` if given."""
@@ -209,10 +238,11 @@ class RealAlgebraic:
     def __float__(self) -> float:
         if self.is_rational:
             return float(self.lo)
-        # relative width 2^-60 of the *refined* interval (a wide isolating interval such as
-        # (0, 2^62) says nothing about the size of the root itself)
-        # a jump to relative width 2^-44 first (float Newton + exact sign check, see refine)
-        self.refine(max(abs(self.lo), abs(self.hi), mpq(1, 2**1000)) * mpq(1, 2**44))
+        x = self._rounded_by_newton()  # correctly rounded, checked exactly
+        if x is not None:
+            return x
+        # else: relative width 2^-60 of the *refined* interval (a wide isolating interval
+        # such as (0, 2^62) says nothing about the size of the root itself)
         while self.hi - self.lo > (bound := max(abs(self.lo), abs(self.hi), mpq(1, 2**1000)) * mpq(1, 2**60)):
             self.refine(bound)  # one bisection run to the bound (was one run per halving)
         return float((self.lo + self.hi) / 2)
