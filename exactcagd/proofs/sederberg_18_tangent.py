@@ -15,6 +15,7 @@ from exactcagd import BezierCurve
 from exactcagd.algebra import cusp_parameters, double_points, scaled_hodograph, tangent_control_lines, tangent_moving_line
 from exactcagd.algebra.dual import inflection_polynomial
 from exactcagd.proofs import _ledger as L
+from exactcagd.proofs.sederberg_19_genus import _parameter_pairs
 from exactcagd.proofs._ledger import claim, reconstructed, verified, verified_range
 
 DOC = "sederberg"
@@ -125,8 +126,13 @@ def plucker():
             assert kappa_sympy == kappa and 2 * kappa_sympy + iota_sympy == 3 * m - 6
         dp = double_points(c)
         assert sum(d.count for d in dp) == (m - 1) * (m - 2) // 2
+        # independent: parameter pairs with P(s) ~ P(t), with multiplicity (sympy Groebner): 2 per node, 2 per cusp (on s = t)
+        pairs, no_diagonal = _parameter_pairs(c)
+        assert pairs == (m - 1) * (m - 2) and no_diagonal == (kappa == 0)
         rows.append((m, kappa, iota))
-    return verified_range("a cuspidal cubic, random cubic, quartic, quintic", f"(m, kappa, iota) = {rows}; cusps are double roots of det(P,P',P''); double points + cusps = (m-1)(m-2)/2")
+    return verified_range("a cuspidal cubic, random cubic, quartic, quintic", f"(m, kappa, iota) = {rows}; cusps are double roots of det(P,P',P''); double points + cusps = (m-1)(m-2)/2",
+        compared="printed 2 kappa + iota = 3m - 6 vs the roots of det(P, P', P'') factored in sympy (double roots are cusps: P x P' vanishes there; simple roots are not); printed delta + kappa = (m-1)(m-2)/2 vs the parameter pairs with P(s) ~ P(t) counted with multiplicity (sympy Groebner basis; a cusp lies on s = t)",
+        reference='sympy')
 
 
 @claim(DOC, "18.5.2", "(18.101)-(18.103)", "B = k1 (A x A') implies A = k2 (B x B') with k2 = 1 / (k1^2 A x A' . A'')")
