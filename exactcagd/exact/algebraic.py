@@ -149,6 +149,15 @@ class RealAlgebraic:
             self._bracket_float_root(width)
             if self.hi - self.lo < width:
                 return self
+            # Newton started in a wide interval may leave it: 8 bisections, then once more
+            self._bisect((self.hi - self.lo) / 256)
+            self._bracket_float_root(width)
+        return self._bisect(width)
+
+    def _bisect(self, width: mpq) -> "RealAlgebraic":
+        """Exact bisection until the interval is narrower than ``width``."""
+        if self.hi - self.lo < width:
+            return self
         # bisection in flint's fmpq (one conversion in, one out; ~3x faster per step than mpq)
         poly, half = self.poly, flint.fmpq(1, 2)
         lo, hi, w = (flint.fmpq(int(v.numerator), int(v.denominator)) for v in (self.lo, self.hi, width))
