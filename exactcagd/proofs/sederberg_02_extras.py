@@ -162,8 +162,26 @@ def rational_end_curvature():
     for _ in range(10):
         c = _random_curve(rng, rng.randint(3, 6))
         assert bx.end_curvature(c) == bx.curvature(c, 2, (2, 7)) == bx.curvature(c, 0)
+        # the printed (2.13), squared, vs sympy's curvature of the exact curve at t = 0
+        n = c.degree
+        w = [_R(x) for x in c.weights_array()]
+        P = [[_R(x) for x in pt] for pt in c.control_points]
+        a2 = (P[1][0] - P[0][0]) ** 2 + (P[1][1] - P[0][1]) ** 2
+        cr = (P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) - (P[1][1] - P[0][1]) * (P[2][0] - P[0][0])
+        printed2 = (w[0] * w[2] / w[1] ** 2) ** 2 * sp.Rational(n - 1, n) ** 2 * (cr**2 / a2) / a2**2
+        # derivatives at 0 of N_k / W by the quotient rule on sympy polynomials
+        Wp = sp.Poly(sum(w[i] * _B(n, i) for i in range(n + 1)), t)
+        W0, W1, W2 = (Wp.diff((t, k)).eval(0) if k else Wp.eval(0) for k in range(3))
+        d1, d2 = [], []
+        for k in range(2):
+            Np = sp.Poly(sum(w[i] * P[i][k] * _B(n, i) for i in range(n + 1)), t)
+            N0, N1, N2 = (Np.diff((t, j)).eval(0) if j else Np.eval(0) for j in range(3))
+            d1.append((N1 * W0 - N0 * W1) / W0**2)
+            d2.append(((N2 * W0 - N0 * W2) * W0 - 2 * (N1 * W0 - N0 * W1) * W1) / W0**3)
+        kappa2 = (d1[0] * d2[1] - d1[1] * d2[0]) ** 2 / (d1[0] ** 2 + d1[1] ** 2) ** 3
+        assert kappa2 == printed2 == _R(bx.end_curvature(c)) ** 2
     return verified("kappa^2 identity in sympy for n = 2 (generic data); exact equality with the general curvature on [0,1] and [2,7] for 10 random curves of degree 3-6",
-        compared="printed (2.13) kappa^2 vs sympy's (x'y'' - y'x'')^2 / (x'^2 + y'^2)^3 for the symbolic rational quadratic (cancel); for degrees 3-6 exactcagd's end_curvature vs its general curvature on [0,1] and [2,7] (package on both sides there)",
+        compared="printed (2.13) kappa^2 vs sympy's (x'y'' - y'x'')^2 / (x'^2 + y'^2)^3 for the symbolic rational quadratic (cancel); for 10 random exact curves of degree 3-6 the printed (2.13) (squared) vs sympy's curvature at t = 0, and exactcagd's end_curvature / general curvature on [0,1] and [2,7] agree",
         reference='sympy',
     )
 
