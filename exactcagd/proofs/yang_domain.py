@@ -4,6 +4,7 @@ knots and at knot-line crossings, then into monotonic pieces (section 5)."""
 from __future__ import annotations
 
 import flint
+import sympy
 from gmpy2 import mpq
 
 from exactcagd.curves_on_surfaces.domain import DomainCurve
@@ -15,6 +16,7 @@ from exactcagd.proofs._ledger import claim, verified_range
 
 @claim(doc="yang", section="3", ref="domain curve subdivision", statement="after subdividing at the knots of D(t) and where D(t) crosses a u or v knot value, each segment is a rational Bézier curve (and, after the monotonic cuts of section 5, monotonic in u and v)")
 def domain_subdivision():
+    x = sympy.Symbol("x")
     S = analytic_surface(9, 8, "face")
     D = closed_domain_curve(8)
     dc = DomainCurve(D)
@@ -35,6 +37,12 @@ def domain_subdivision():
             if g != 0:
                 coeffs = [mpq(int(c.p), int(c.q)) for c in g.coeffs()]
                 assert all(m % 2 == 0 for r, m in real_roots(coeffs, 0, 1) if 0 < r < 1)
+                # independent: sympy's square-free factorization, no odd-multiplicity factor with a root in (0, 1)
+                P = sympy.Poly([sympy.Rational(int(c.p), int(c.q)) for c in reversed(g.coeffs())], x)
+                for f, mult in P.sqf_list()[1]:
+                    if mult % 2:
+                        inside = f.count_roots(0, 1) - (f.eval(0) == 0) - (f.eval(1) == 0)
+                        assert inside == 0
         # in one patch: the midpoint's knot span contains both end points' spans
         mid = dc.point(k, (ta + tb) / 2)
         i = max(j for j, x in enumerate(u_lines) if x <= mid[0])
@@ -46,6 +54,6 @@ def domain_subdivision():
     return verified_range(
         f"9 x 8 bicubic surface (6 x 5 patches), closed cubic NURBS curve: {pieces} pieces, {irrational} at irrational cuts",
         "every piece is monotonic in u and v (no root of odd multiplicity of the derivative numerators inside the piece, exact isolation) and lies in one patch (end points within 2^-60 of its closed span; irrational cuts are carried by 2^-64 intervals)",
-        compared="section 3/5 claim (each piece rational Bezier, monotonic in u and v, in one patch) vs flint derivatives of each piece's power-form numerators u'w - uw', v'w - vw' with exact real-root isolation on (0, 1) (no odd-multiplicity root), and each piece's end points vs the surface's knot lines",
+        compared="section 3/5 claim (each piece rational Bezier, monotonic in u and v, in one patch) vs flint derivatives of each piece's power-form numerators u'w - uw', v'w - vw' with exact real-root isolation on (0, 1) (no odd-multiplicity root; exactcagd's real_roots and sympy's square-free factorization + Sturm count), and each piece's end points vs the surface's knot lines",
         reference='exact',
     )
