@@ -462,6 +462,28 @@ def refinement_equations():
                           compared="printed (15.14)-(15.16) c_i, d_i vs the refinement identity evaluated with sympy's bspline_basis", reference="sympy")
 
 
+def _tspline_point_sympy(mesh, s, t):
+    """(15.7) evaluated from the definition: sum w_i P_i B_i / sum w_i B_i, B_i = N[s_i](s) N[t_i](t) by sympy's
+    bspline_basis (the knot vectors s_i, t_i are the mesh's Rule 1 vectors)."""
+    num, den = [mpq(0)] * 3, mpq(0)
+    for node, p in mesh.points.items():
+        sk, tk = mesh.knot_vectors(node)
+        b = _sympy_N(sk, s) * _sympy_N(tk, t) * mesh.weight(node)
+        den += b
+        num = [a + b * x for a, x in zip(num, p)]
+    return tuple(x / den for x in num)
+
+
+def _bspline_point_cox_de_boor(B, s, t):
+    """A tensor B-spline (homogeneous net ``B.hom``, knots ``B.S``, ``B.T``) by the Cox-de Boor recursion on Fractions."""
+    F = lambda x: Fraction(int(mpq(x).numerator), int(mpq(x).denominator))  # noqa: E731
+    H = B.hom
+    net = [[[F(H[i][j][k] / H[i][j][-1]) for k in range(3)] for j in range(H.shape[1])] for i in range(H.shape[0])]
+    w = [[F(H[i][j][-1]) for j in range(H.shape[1])] for i in range(H.shape[0])]
+    p, q = len(B.S) - H.shape[0] - 1, len(B.T) - H.shape[1] - 1
+    return _cox_de_boor_point(net, w, [F(x) for x in B.S], [F(x) for x in B.T], p, q, F(s), F(t))
+
+
 def _tmesh(seed=1574, weights=False):
     """Columns 0..6, rows 0..5; column 3 only between rows 0-1 and 4-5; row 3 only from column 0 to 2."""
     rng = _rng(seed)
@@ -486,7 +508,11 @@ def matrix_m():
     B = M.to_bspline()
     for s, t in _INSIDE:
         assert B.evaluate(s, t) == M.evaluate(s, t)
-    return verified("rational T-spline with T-junctions; the tensor B-spline with homogeneous points sum c_i^j (w_i P_i, w_i) is identical")
+        direct = _tspline_point_sympy(M, s, t)
+        assert tuple(Fraction(int(x.numerator), int(x.denominator)) for x in direct) == _bspline_point_cox_de_boor(B, s, t)
+    return verified("rational T-spline with T-junctions; the tensor B-spline with homogeneous points sum c_i^j (w_i P_i, w_i) is identical",
+        compared="printed (15.19)-(15.23) map P~ = M P vs two independent evaluations: the T-spline (15.7) from its definition with sympy's bspline_basis (Rule 1 knot vectors from the mesh) and the resulting tensor B-spline by Cox-de Boor on Fractions, at 5 interior points",
+        reference='independent-algorithm')
 
 
 @claim(doc="sederberg", section="15.7.5", ref="Figure 15.20", statement="inserting P2 at (s3, t2) requires one more control point P3 at (s3, t3) and no other")
@@ -529,7 +555,12 @@ def standard_rows():
         pt = _INSIDE[0] if mesh is not grid else (mpq(3, 2), mpq(3, 2))
         total = sum(mesh.blending(n, *pt) for n in mesh.points)
         assert (total == 1) == rows_one
-    return verified("full grid and the refined mesh are standard (row sums 1, sum B_i = 1); the mesh with crossing T-junction extensions is not")
+        sk_tk = [mesh.knot_vectors(n) for n in mesh.points]
+        total_sympy = sum(_sympy_N(sk, pt[0]) * _sympy_N(tk, pt[1]) for sk, tk in sk_tk)  # partition of unity, sympy bspline_basis
+        assert total_sympy == total
+    return verified("full grid and the refined mesh are standard (row sums 1, sum B_i = 1); the mesh with crossing T-junction extensions is not",
+        compared="printed criterion (row sums of exactcagd's refinement matrix M equal 1) vs the partition of unity sum B_i evaluated with sympy's bspline_basis (Rule 1 knot vectors), for a full grid, a refined and a non-standard mesh",
+        reference='sympy')
 
 
 @claim(doc="sederberg", section="15.7.6", ref="Figure 15.21", statement="two semi-standard T-splines")
