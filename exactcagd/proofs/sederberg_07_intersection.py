@@ -200,12 +200,30 @@ def clipping_quadratic_convergence():
     ratios = [w[k + 1] / w[k] ** 2 for k in range(len(w) - 1) if w[k] < 0.2 and w[k + 1] > 1e-14]
     assert len(ratios) >= 2 and max(ratios) < 1.0
     assert w[2] < 0.2 and w[-1] < 1e-13 and len(w) <= 7
+    # the widths shrink onto the true intersection: the exact parameter on P (sympy resultant, real root in [0, 1])
+    # lies in the clipping's final interval
+    from exactcagd import BezierCurve
+    from exactcagd.numeric import intersect
+
+    s, u = sympy.symbols("s u")
+    P, Qp = [[0, 0], [1, 2], [3, 2], [4, 0]], [[0, 2], [2, 0], [3, 1], [4, -1]]
+    a, b = ([sum(C[i][k] * sympy.binomial(3, i) * x**i * (1 - x) ** (3 - i) for i in range(4)) for k in range(2)] for C, x in ((P, s), (Qp, u)))
+    res = sympy.resultant(sympy.expand(a[0] - b[0]), sympy.expand(a[1] - b[1]), u)  # only its roots are used
+    exact = [r for r in sympy.real_roots(sympy.Poly(res, s)) if 0 <= r <= 1]
+    found = intersect(BezierCurve(P), BezierCurve(Qp), method="clipping", tol=1e-12)
+    assert len(exact) == len(found) == 1
+    lo, hi = found[0].t1_interval
+    assert sympy.Rational(lo) <= exact[0] <= sympy.Rational(hi)
     return verified_range(
         "two cubics with one transversal intersection (tests/test_numeric_intersection.py); Table 7.2's own curves "
         "are only drawn (Fig. 7.5), not given",
         f"parameter widths on P per round: {', '.join(f'{x:.2e}' for x in w)}; w_k/w_(k-1)^2 = "
         f"{', '.join(f'{r:.3f}' for r in ratios)} (bounded: quadratic); six digits (width < 1e-6) after "
-        f"{next(k + 1 for k, x in enumerate(w) if x < 1e-6)} rounds, float resolution after {len(w)}")
+        f"{next(k + 1 for k, x in enumerate(w) if x < 1e-6)} rounds, float resolution after {len(w)}",
+        compared="printed convergence claim vs the measured parameter widths of exactcagd's Bezier clipping per round "
+        "(w_k/w_(k-1)^2 bounded, width < 1e-6 after the third round; a measurement of the implementation), converging onto "
+        "the exact intersection parameter: the real root in [0, 1] of the sympy resultant lies in the final clipping interval",
+        reference="sympy")
 
 
 def _relative_times(degrees=(3, 5, 10), repeat=5):
