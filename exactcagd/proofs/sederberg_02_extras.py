@@ -116,6 +116,22 @@ def difference_curve_bound():
     )
 
 
+def _derivatives_at_0(c):
+    """First and second derivatives at t = 0 of the exact planar curve N_k / W: quotient rule on sympy polynomials."""
+    n = c.degree
+    w = [_R(x) for x in c.weights_array()]
+    P = [[_R(x) for x in pt] for pt in c.control_points]
+    Wp = sp.Poly(sum(w[i] * _B(n, i) for i in range(n + 1)), t)
+    W0, W1, W2 = (Wp.diff((t, k)).eval(0) if k else Wp.eval(0) for k in range(3))
+    d1, d2 = [], []
+    for k in range(2):
+        Np = sp.Poly(sum(w[i] * P[i][k] * _B(n, i) for i in range(n + 1)), t)
+        N0, N1, N2 = (Np.diff((t, j)).eval(0) if j else Np.eval(0) for j in range(3))
+        d1.append((N1 * W0 - N0 * W1) / W0**2)
+        d2.append(((N2 * W0 - N0 * W2) * W0 - 2 * (N1 * W0 - N0 * W1) * W1) / W0**3)
+    return d1, d2
+
+
 @claim(doc="sederberg", section="2.9.2", ref="(2.10), (2.11)", statement="P'(t0) = (w1/w0) n/(t1 - t0) (P1 - P0)")
 def rational_end_first_derivative():
     t0, t1 = sp.symbols("t_0 t_1")
@@ -140,8 +156,16 @@ def rational_end_second_derivative():
     for _ in range(10):
         c = _random_curve(rng, rng.randint(2, 6))
         assert bx.end_second_derivative(c, (1, 4)) == bx.derivatives_at(c, 1, 2, (1, 4))[2]
+        # the printed (2.12) on [t0, t1] = [1, 4] vs sympy's second derivative of P((tau - 1)/3) at tau = 1
+        n = c.degree
+        w = [_R(x) for x in c.weights_array()]
+        P = [sp.Matrix([_R(x) for x in pt]) for pt in c.control_points]
+        printed = (n * (n - 1) / sp.Integer(9) * w[2] / w[0] * (P[2] - P[0])
+                   - 2 * n / sp.Integer(9) * w[1] / w[0] * (n * w[1] - w[0]) / w[0] * (P[1] - P[0]))
+        _, d2 = _derivatives_at_0(c)
+        assert list(printed) == [x / 9 for x in d2] == [_R(x) for x in bx.end_second_derivative(c, (1, 4))]
     return verified("sympy second derivative at t = 0 for n = 2, 3, 4 (generic data); exact check on [1, 4] for 10 random curves up to degree 6",
-        compared="printed (2.12) vs sympy second derivative of the symbolic rational curve at t = 0, n = 2, 3, 4; exactcagd's end_second_derivative agrees with its general derivatives_at on 10 random curves",
+        compared="printed (2.12) vs sympy second derivative of the symbolic rational curve at t = 0, n = 2, 3, 4; on [1, 4] the printed formula vs sympy's quotient-rule second derivative of 10 random exact curves (degree 2-6), with exactcagd's end_second_derivative and derivatives_at agreeing",
         reference='sympy',
     )
 
@@ -169,15 +193,7 @@ def rational_end_curvature():
         a2 = (P[1][0] - P[0][0]) ** 2 + (P[1][1] - P[0][1]) ** 2
         cr = (P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) - (P[1][1] - P[0][1]) * (P[2][0] - P[0][0])
         printed2 = (w[0] * w[2] / w[1] ** 2) ** 2 * sp.Rational(n - 1, n) ** 2 * (cr**2 / a2) / a2**2
-        # derivatives at 0 of N_k / W by the quotient rule on sympy polynomials
-        Wp = sp.Poly(sum(w[i] * _B(n, i) for i in range(n + 1)), t)
-        W0, W1, W2 = (Wp.diff((t, k)).eval(0) if k else Wp.eval(0) for k in range(3))
-        d1, d2 = [], []
-        for k in range(2):
-            Np = sp.Poly(sum(w[i] * P[i][k] * _B(n, i) for i in range(n + 1)), t)
-            N0, N1, N2 = (Np.diff((t, j)).eval(0) if j else Np.eval(0) for j in range(3))
-            d1.append((N1 * W0 - N0 * W1) / W0**2)
-            d2.append(((N2 * W0 - N0 * W2) * W0 - 2 * (N1 * W0 - N0 * W1) * W1) / W0**3)
+        d1, d2 = _derivatives_at_0(c)
         kappa2 = (d1[0] * d2[1] - d1[1] * d2[0]) ** 2 / (d1[0] ** 2 + d1[1] ** 2) ** 3
         assert kappa2 == printed2 == _R(bx.end_curvature(c)) ** 2
     return verified("kappa^2 identity in sympy for n = 2 (generic data); exact equality with the general curvature on [0,1] and [2,7] for 10 random curves of degree 3-6",
