@@ -188,8 +188,9 @@ def chord_bound():
             M2 = (n * (n - 1)) ** 2 * max((Pm[i + 2] - 2 * Pm[i + 1] + Pm[i]).dot(Pm[i + 2] - 2 * Pm[i + 1] + Pm[i]) for i in range(n - 1))
             assert _R(bound) == M2
             r = sum((sp.binomial(n, i) * T**i * (1 - T) ** (n - i) * Pm[i] for i in range(n + 1)), sp.zeros(3, 1))
-            gap = sp.Poly(sp.expand(M2 - r.diff(T, 2).dot(r.diff(T, 2))), T)  # >= 0 on [0, 1]: no sign change, positive inside
-            assert gap.eval(sp.Rational(1, 2)) >= 0 and gap.count_roots(0, 1) == 0 or all(gap.eval(x) >= 0 for x in (0, 1))
+            gap = sp.Poly(sp.expand(M2 - r.diff(T, 2).dot(r.diff(T, 2))), T)  # >= 0 on [0, 1]: at the ends and every stationary point
+            stationary = [x for x in sp.real_roots(gap.diff(T)) if 0 <= x <= 1] if gap.degree() > 1 else []
+            assert all(sp.simplify(gap.as_expr().subs(T, x)) >= 0 for x in [sp.Integer(0), sp.Integer(1)] + stationary)
             ra, rb = r.subs(T, _R(a)), r.subs(T, _R(b))
             for j in range(9):  # the chord bound (1/8) M (b - a)^2 at 9 exact parameters, squared
                 x = _R(a) + (_R(b) - _R(a)) * sp.Rational(j, 8)
