@@ -16,7 +16,10 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+from . import _sympy_bridge
 from ._version import __version__
+
+_sympy_bridge.install()  # mpq * Symbol stays exact, whichever of sympy and exactcagd comes first
 
 if TYPE_CHECKING:  # what type checkers and IDEs see; at run time see __getattr__
     from . import errors, limits

@@ -20,12 +20,9 @@ mpq(1,2)
 from __future__ import annotations
 
 import contextlib
-import importlib.abc
-import importlib.util
 import math
 import numbers
 import re
-import sys
 import threading
 from fractions import Fraction
 
@@ -33,7 +30,7 @@ import flint
 import gmpy2
 from gmpy2 import mpq, mpz
 
-from .. import limits
+from .. import _sympy_bridge, limits
 from ..errors import InexactInputError, InputError, LimitError
 
 __all__ = [
@@ -478,45 +475,4 @@ def to_float(x: Rational) -> float:
 
 
 # ----------------------------------------------------------------------------- sympy bridge
-def _mpq_to_sympy(q):
-    import sympy
-
-    return sympy.Rational(int(q.numerator), int(q.denominator))
-
-
-def _register_sympy_converter() -> None:
-    """Teach sympy that ``mpq`` is an exact rational.
-
-    Without this, ``sympify(mpq(1, 3))`` gives the Float 0.3333 (sympy falls back on
-    ``__float__``), so ``mpq * Symbol`` silently loses exactness.
-    """
-    from sympy.core.sympify import converter
-
-    converter[Rational] = _mpq_to_sympy
-
-
-class _SympyHook(importlib.abc.MetaPathFinder):
-    """Registers the converter right after ``sympy.core.sympify`` is first imported,
-    so importing exactcagd does not have to import sympy itself."""
-
-    def find_spec(self, name, path, target=None):
-        if name != "sympy.core.sympify":
-            return None
-        sys.meta_path.remove(self)
-        spec = importlib.util.find_spec(name)
-        if spec is None or spec.loader is None:  # pragma: no cover
-            return spec
-        original = spec.loader.exec_module
-
-        def exec_module(module):
-            original(module)
-            module.converter[Rational] = _mpq_to_sympy
-
-        spec.loader.exec_module = exec_module
-        return spec
-
-
-if "sympy.core.sympify" in sys.modules:
-    _register_sympy_converter()
-elif not any(isinstance(f, _SympyHook) for f in sys.meta_path):
-    sys.meta_path.insert(0, _SympyHook())
+_sympy_bridge.install()  # mpq stays exact inside sympy (also done by ``import exactcagd``)
