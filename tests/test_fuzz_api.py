@@ -489,20 +489,8 @@ def _check(worker, name, drawn):
 
 
 # ---------------------------------------------------------------- the property
-#: entry points whose fix belongs to another part of issue 14 (numeric/roots.py: the
-#: curve-intersection work owns it; it is to call exact.scalars.to_tolerance for ``tol``
-#: and check the curve type): reported, not hidden -- they run and show as xfail/xpass
-OWNED_ELSEWHERE = {
-    "bernstein_roots": "numeric/roots.py: bernstein_roots(tol='1/100') -> ValueError from float(tol)",
-    "line_roots": "numeric/roots.py: line_roots(True, ...) -> AttributeError (no curve type check)",
-}
-
-
 def _cases():
-    return [
-        pytest.param(n, marks=pytest.mark.xfail(reason=OWNED_ELSEWHERE[n], strict=False)) if n in OWNED_ELSEWHERE else n
-        for n in sorted(ENTRIES)
-    ]
+    return sorted(ENTRIES)
 
 
 @pytest.mark.parametrize("name", _cases())

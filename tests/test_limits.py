@@ -286,8 +286,7 @@ def _tol_calls():
 _BAD_TOLERANCES = [True, False, b"1e-6", None, "abc", sympy.pi, sympy.Symbol("e"), math.nan, math.inf, -1, 0]
 
 
-@pytest.mark.parametrize("name", ["approximate", "approximate_cubic", "numeric.intersect",
-                                  pytest.param("bernstein_roots", marks=pytest.mark.xfail(reason="numeric/roots.py (intersection work) still does float(tol)", strict=False))])
+@pytest.mark.parametrize("name", ["approximate", "approximate_cubic", "numeric.intersect", "bernstein_roots"])
 def test_bad_tolerances_are_refused_everywhere(name):
     call = _tol_calls()[name]
     for tol in _BAD_TOLERANCES:

@@ -50,7 +50,9 @@ from gmpy2 import mpq
 from ..errors import DimensionError, InputError, LimitError
 from ..exact.algebraic import real_roots_bernstein
 from ..exact.bernstein import as_coefficients, derivative
-from ..exact.scalars import to_rational
+from ..exact.scalars import to_rational, to_tolerance
+from ..geometry._validate import instance_of
+from ..geometry.bezier_curve import BezierCurve
 from . import enclose as iv
 
 __all__ = [
@@ -711,9 +713,7 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
     """
     if method not in METHODS:
         raise InputError(f"unknown root-finding method {method!r}; expected one of {METHODS}")
-    tol = float(tol)
-    if not (tol > 0):
-        raise InputError("tol must be positive")
+    tol = to_tolerance(tol)
     c, ends, y = _prepare(coeffs)
     if len(c) <= 1:
         return ends
@@ -753,10 +753,11 @@ def line_coefficients(curve, line) -> np.ndarray:
 
     ``line = (a, b, c)`` is the line ``a x + b y + c = 0`` (homogeneously ``aX + bY + cW``).
     """
+    instance_of(curve, BezierCurve, "curve")
     if curve.dimension != 2:
         raise DimensionError(f"line_roots needs a planar curve, got dimension {curve.dimension}")
-    if len(line) != 3:
-        raise InputError("a line is given as (a, b, c) for a x + b y + c = 0")
+    if not isinstance(line, (tuple, list, np.ndarray)) or len(line) != 3:
+        raise InputError("line: a line is given as (a, b, c) for a x + b y + c = 0")
     a, b, c = (to_rational(v, where="line coefficient") for v in line)
     if a == 0 and b == 0:
         raise InputError("(0, 0, c) is not a line")
