@@ -104,3 +104,15 @@ def test_verified_rows_state_their_reference_kind_when_they_say_what_was_compare
                 assert _kw(call, "reference"), f"{c.key}: compared= without reference="
 
 
+
+
+def test_every_verified_row_states_what_was_compared_with_what():
+    """Issue 17 §2: a verified row says which printed text it tested against which
+    independent reference (``compared=``), so a reader can audit the verdict."""
+    silent = []
+    for c in CLAIMS:
+        _, rets = _returns(c.func)
+        for name, call in rets:
+            if name in ("verified", "verified_range") and not _kw(call, "compared"):
+                silent.append(c.key)
+    assert not silent, f"{len(silent)} verified rows do not say what was compared: {sorted(set(silent))}"
