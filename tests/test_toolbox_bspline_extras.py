@@ -104,7 +104,7 @@ def test_insert_clamp_elevate_keep_the_curve(case, cuts):
 def test_bezier_pieces_match_sympy_cox_de_boor(case):
     p, pts, knots = case
     c = bx.SplineCurve(pts, knots)
-    for (a, b), piece in c.to_sympy(T):
+    for (a, b), piece in c.to_sympy_pieces(T):
         for k in range(2):
             ref = sum(cox_de_boor_sym(i, p, knots, T, (a, b)) * R(pts[i][k]) for i in range(len(pts)))
             assert sp.expand(piece[k] - ref) == 0
@@ -116,8 +116,8 @@ def test_hodograph_is_the_derivative(case):
     p, pts, knots = case
     c = bx.SplineCurve(pts, knots)
     d = c.derivative()
-    pieces = dict(d.to_sympy(T))
-    for span, piece in c.to_sympy(T):
+    pieces = dict(d.to_sympy_pieces(T))
+    for span, piece in c.to_sympy_pieces(T):
         assert sp.expand(piece.diff(T) - pieces[span]) == sp.zeros(2, 1)
 
 

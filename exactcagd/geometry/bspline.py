@@ -1,4 +1,4 @@
-"""Exact B-spline and NURBS curves and surfaces with clamped knot vectors.
+"""Exact B-spline and NURBS curves (any knot vector) and surfaces (clamped knot vectors).
 
 Sources: Sederberg's notes (003) chapter 6 (6.3 extraction, 6.7 knot insertion,
 6.8 de Boor) and 15.7 (NURBS surfaces); Yang et al. (004) section 3 (splitting a
@@ -6,6 +6,12 @@ NURBS surface into rational Bézier patches by knot insertion).
 
 Rational (NURBS) objects are handled in homogeneous form ``(w P, w)``, so every
 algorithm is the polynomial one applied one dimension up.
+
+A curve's knot vector need not be clamped (periodic and uniform B-splines, notes
+6.5); its domain is ``[knots[p], knots[n]]``.  Knot insertion, clamping, degree
+elevation and knot removal are all one computation: a control point with polar
+label ``(u_1, ..., u_p)`` over a new knot vector is the blossom of the old spline
+at that label (notes 6.1 rule 4, 6.8; :func:`exactcagd.exact.knots.blossom_de_boor`).
 
 >>> from exactcagd import BSplineCurve
 >>> c = BSplineCurve([[0, 0], [1, 1], [2, 0], [3, 1]], knots=[0, 0, 0, 1, 2, 2, 2])
@@ -17,9 +23,11 @@ algorithm is the polynomial one applied one dimension up.
 
 from __future__ import annotations
 
-import numpy as np
 
-from ..errors import KnotError
+import numpy as np
+from gmpy2 import mpq
+
+from ..errors import DegreeError, DomainError, InputError, KnotError, NotSupportedError
 from ..exact import knots as kn
 from ..exact.scalars import rational_str, to_count, to_rational
 from ._validate import check_stored_degree, dehomogenize, exchange_fields, homogeneous, point_array, weight_array
@@ -56,6 +64,14 @@ def _project(hom: np.ndarray, rational: bool) -> tuple:
     return tuple(x / hom[-1] for x in hom[:-1])
 
 
+def _refines(new: tuple, old: tuple, lo, hi) -> bool:
+    """Does ``new`` contain every old knot strictly inside ``(lo, hi)`` with at least its multiplicity?"""
+    for v in set(k for k in old if lo < k < hi):
+        if new.count(v) < old.count(v):
+            return False
+    return True
+
+
 class _ByValue:
     """Equality and hashing by the stored representation (``_key()``: degrees, knots, points,
     weights), exactly; so a pickle or ``to_dict``/``from_dict`` round trip compares equal."""
@@ -73,12 +89,17 @@ class _ByValue:
 
 
 class BSplineCurve(_ByValue):
-    """A clamped B-spline (NURBS with ``weights``) curve with exact data.
+    """A B-spline (NURBS with ``weights``) curve with exact data, on any knot vector.
+
+    The knot vector may be clamped (the curve interpolates its end control points) or
+    not (uniform and periodic B-splines, notes 6.5); the curve is defined on its domain
+    ``[knots[p], knots[n]]`` (``n`` control points, degree ``p``).
 
     Parameters
     ----------
     control_points : sequence of ``n`` points of dimension ``d``
-    knots : sequence of ``n + p + 1`` non-decreasing numbers, clamped
+    knots : sequence of ``n + p + 1`` non-decreasing numbers (standard convention;
+        interior multiplicity at most ``p``)
     weights : ``n`` positive numbers, optional
     degree : int, optional
         Checked against ``len(knots) - n - 1`` if given.
@@ -88,6 +109,11 @@ class BSplineCurve(_ByValue):
     >>> c = BSplineCurve([[0, 0], [1, 1], [2, 0], [3, 1]], knots=[0, 0, 0, 1, 2, 2, 2])
     >>> [piece.control_points[0] for _, piece in c.to_bezier()]
     [(mpq(0,1), mpq(0,1)), (mpq(3,2), mpq(1,2))]
+    >>> u = BSplineCurve([[0, 0], [1, 2], [3, 2], [4, 0]], knots=range(7))   # uniform, unclamped
+    >>> u.domain, u.evaluate(3)
+    ((mpq(2,1), mpq(4,1)), (mpq(2,1), mpq(2,1)))
+    >>> u.clamp().evaluate(3) == u.evaluate(3)
+    True
     """
 
     __slots__ = ("_points", "_weights", "_knots", "_degree")
@@ -96,7 +122,7 @@ class BSplineCurve(_ByValue):
         points = point_array(control_points, 1, "control_points")
         knots = _knot_list(knots, "knots")
         p = _degree_from(points.shape[0], knots, degree)
-        self._knots = kn.check_knots(knots, points.shape[0], p, what="knots")
+        self._knots = kn.check_knots(knots, points.shape[0], p, clamped=False, what="knots")
         self._degree = p
         self._points = points
         self._weights = weight_array(weights, (points.shape[0],), "weights")
@@ -104,8 +130,18 @@ class BSplineCurve(_ByValue):
     @classmethod
     def _trusted(cls, points, weights, knots, degree) -> "BSplineCurve":
         curve = object.__new__(cls)
-        curve._points, curve._weights, curve._knots, curve._degree = points, weights, knots, degree
+        curve._points, curve._weights, curve._knots, curve._degree = points, weights, tuple(knots), degree
         return curve
+
+    @classmethod
+    def _from_hom(cls, hom: np.ndarray, knots, rational: bool) -> "BSplineCurve":
+        """The curve with homogeneous control points ``hom`` (weights dropped unless ``rational``)."""
+        knots = tuple(knots)
+        degree = len(knots) - hom.shape[0] - 1
+        if not rational:
+            return cls._trusted(hom[:, :-1].copy(), None, knots, degree)
+        points, weights = dehomogenize(hom)
+        return cls._trusted(points, weights, knots, degree)
 
     def _array(self) -> np.ndarray:
         return self._points if self._weights is None else homogeneous(self._points, self._weights)
@@ -130,6 +166,12 @@ class BSplineCurve(_ByValue):
         return self._weights is not None
 
     @property
+    def is_clamped(self) -> bool:
+        """Are both end knots of multiplicity exactly ``p + 1`` (Bézier end conditions, notes 6.6)?"""
+        p, ks = self._degree, self._knots
+        return kn.multiplicity(ks, ks[0]) == p + 1 and kn.multiplicity(ks, ks[-1]) == p + 1
+
+    @property
     def knots(self) -> tuple:
         return self._knots
 
@@ -146,10 +188,45 @@ class BSplineCurve(_ByValue):
     def weights(self) -> tuple | None:
         return None if self._weights is None else tuple(self._weights)
 
+    def homogeneous(self) -> np.ndarray:
+        """Homogeneous control points ``(w P, w)`` (weights 1 for a polynomial curve)."""
+        return homogeneous(self._points, self._weights)
+
     def breakpoints(self) -> tuple:
         """Distinct knots inside the domain, ends included."""
         lo, hi = self.domain
         return tuple(sorted(set(k for k in self._knots if lo <= k <= hi)))
+
+    def spans(self) -> list[int]:
+        """Indices ``l`` of the non-empty knot spans ``[knots[l], knots[l+1]]`` of the domain."""
+        p, n = self._degree, self._points.shape[0]
+        return [l for l in range(p, n) if self._knots[l] < self._knots[l + 1]]
+
+    # ------------------------------------------------------------------ polar form
+    def segment(self, l: int) -> tuple[np.ndarray, tuple]:
+        """Homogeneous control points and ``2p`` local knots of the segment over span ``l``."""
+        p = self._degree
+        if l not in self.spans():
+            raise DomainError(f"span {l} is not a non-empty span of the domain")
+        return self.homogeneous()[l - p : l + 1], self._knots[l - p + 1 : l + p + 1]
+
+    def polar_value(self, l: int, args) -> np.ndarray:
+        """Homogeneous polar value ``f_l(args)`` of the segment over span ``l`` (notes 6.1 rule 4, 6.8).
+
+        >>> c = BSplineCurve([[0], [1], [0]], knots=[0, 1, 2, 3, 4, 5])
+        >>> c.polar_value(2, [mpq(5, 2), mpq(5, 2)])     # the point at 5/2, homogeneous
+        array([mpq(3,4), mpq(1,1)], dtype=object)
+        """
+        if l not in self.spans():
+            raise DomainError(f"span {l} is not a non-empty span of the domain")
+        args = [to_rational(x, where="polar argument") for x in args]
+        if len(args) != self._degree:
+            raise InputError(f"the polar form of a degree-{self._degree} segment takes {self._degree} arguments, got {len(args)}")
+        return kn.blossom_de_boor(self.homogeneous(), self._knots, self._degree, l, args)
+
+    def span_of(self, t) -> int:
+        """The span index containing ``t`` (the last non-empty span for the right end of the domain)."""
+        return kn.find_span(self._knots, self._degree, to_rational(t, where="t"))
 
     # ------------------------------------------------------------------ algorithms
     def evaluate(self, t) -> tuple:
@@ -164,15 +241,167 @@ class BSplineCurve(_ByValue):
         array, knots = kn.insert_knot(self._array(), self._knots, self._degree, t, times)
         return self._from_array(array, knots)
 
+    def insert_knots(self, values) -> "BSplineCurve":
+        """Insert the given knots (each inside the open domain) at once (notes 6.7)."""
+        vals = [to_rational(v, where="inserted knot") for v in values]
+        lo, hi = self.domain
+        for v in vals:
+            if not lo < v < hi:
+                raise DomainError(f"inserted knot {v} is not inside the open domain ({lo}, {hi})")
+        return self.rebase(sorted(self._knots + tuple(vals)))
+
     def to_bezier(self) -> list[tuple[tuple, BezierCurve]]:
         """Exact Bézier extraction (notes 6.3): ``[((a, b), BezierCurve), ...]``.
 
-        Each piece is parametrized over [0, 1]; ``(a, b)`` is its knot span.
+        Each piece is parametrized over [0, 1]; ``(a, b)`` is its knot span.  A clamped
+        curve of degree >= 1 is extracted by knot insertion, any other one span by span by
+        blossoming (control point ``i`` of a piece is ``f(a^{p-i}, b^i)``).
         """
-        pieces = kn.extract_bezier(self._array(), self._knots, self._degree)
+        if self.is_clamped and self._degree > 0:  # extract_bezier's piece offsets assume degree >= 1
+            pieces = kn.extract_bezier(self._array(), self._knots, self._degree)
+        else:
+            array = self._array()
+            pieces = [kn.span_bezier(array, self._knots, self._degree, i) for i in range(len(self.spans()))]
         if self._weights is None:
             return [(span, BezierCurve._trusted(arr, None)) for span, arr in pieces]
         return [(span, BezierCurve.from_homogeneous(arr)) for span, arr in pieces]
+
+    def rebase(self, new_knots) -> "BSplineCurve":
+        """The same curve over another knot vector of the same degree (control points = blossoms).
+
+        Knot insertion (notes 6.7) when ``new_knots`` refines the old ones; knot removal
+        when the curve happens to lie in the coarser space -- then the result is verified
+        to reproduce the curve exactly (:class:`KnotError` otherwise).  The new domain
+        must lie inside the old one.
+
+        >>> c = BSplineCurve([[0, 0], [1, 2], [3, 2], [4, 0]], knots=range(7))
+        >>> c.rebase([0, 1, 2, 3, 3, 4, 5, 6]).evaluate(3) == c.evaluate(3)
+        True
+        """
+        p = self._degree
+        ks = tuple(to_rational(k, where="new knot") for k in new_knots)
+        n_new = len(ks) - p - 1
+        if n_new < 1:
+            raise KnotError(f"new knots: {len(ks)} knots are too few for degree {p}")
+        ks = kn.check_knots(ks, n_new, p, clamped=False, what="new knots")
+        lo, hi = self.domain
+        if not (lo <= ks[p] and ks[n_new] <= hi):
+            raise DomainError(f"new domain [{ks[p]}, {ks[n_new]}] is not inside [{lo}, {hi}]")
+        hom = np.stack([self._label_point(ks, j, p) for j in range(n_new)])
+        out = BSplineCurve._from_hom(hom, ks, self.is_rational)
+        if not _refines(ks, self._knots, ks[p], ks[n_new]) and not out._same_on(self):
+            raise KnotError("the curve does not lie in the spline space of the new knot vector")
+        return out
+
+    def clamp(self) -> "BSplineCurve":
+        """Bézier end conditions (notes 6.6): the same curve with ``(p+1)``-fold end knots
+        over the same domain; it interpolates its end control points."""
+        if self.is_clamped:
+            return self
+        return self.rebase(self._clamped_knots())
+
+    def greville(self) -> tuple:
+        """Greville abscissae (notes (6.1)): averages of the ``p`` knots of each polar label."""
+        p = self._degree
+        if p == 0:
+            raise DegreeError("Greville abscissae need degree >= 1")
+        return tuple(sum(self._knots[i + 1 : i + p + 1], start=mpq(0)) / p for i in range(self._points.shape[0]))
+
+    def derivative(self) -> "BSplineCurve":
+        """Hodograph (notes (6.2)): ``H_i = p (P_{i+1} - P_i) / (t_{i+p+1} - t_{i+1})``, knots minus the ends.
+
+        Polynomial curves only.  A zero denominator (a ``(p+1)``-fold knot) is not
+        possible inside the domain; at the ends the coefficient is irrelevant and set to 0.
+        """
+        if self.is_rational:
+            raise NotSupportedError("the hodograph of a rational spline is not a spline of lower degree")
+        p = self._degree
+        if p == 0:
+            raise DegreeError("the derivative of a degree-0 spline is not a spline")
+        pts = self._points
+        rows = []
+        for i in range(pts.shape[0] - 1):
+            den = self._knots[i + p + 1] - self._knots[i + 1]
+            rows.append((pts[i + 1] - pts[i]) * (mpq(p) / den) if den != 0 else pts[i] * 0)
+        return BSplineCurve._trusted(np.stack(rows), None, self._knots[1:-1], p - 1)
+
+    def elevate(self) -> "BSplineCurve":
+        """Degree elevation by one (Ramshaw, notes (6.7)-(6.8)) of the clamped curve.
+
+        The curve is first given Bézier end conditions; every knot's multiplicity then
+        rises by one, and the control point with label ``(u_1..u_{p+1})`` is the average
+        of the old polar values over the ``p``-subsets of the label.
+        """
+        p = self._degree
+        base = self.clamp()
+        values = sorted(set(base._knots))
+        new = tuple(v for v in values for _ in range(base._knots.count(v) + 1))
+        n_new = len(new) - (p + 1) - 1
+        hom = np.stack([base._label_point(new, j, p + 1) for j in range(n_new)])
+        return BSplineCurve._from_hom(hom, new, self.is_rational)
+
+    # ------------------------------------------------------------------ helpers of the polar form
+    def _label_point(self, new_knots: tuple, j: int, degree: int) -> np.ndarray:
+        """Control point ``j`` (degree ``degree``) over ``new_knots``: a blossom of this spline.
+
+        The span used is one of the non-empty spans ``l`` in ``[j, j + degree]`` of the
+        new knot vector inside this domain (any of them gives the same value when this
+        spline belongs to the new spline space).
+        """
+        label = new_knots[j + 1 : j + degree + 1]
+        lo, hi = self.domain
+        old = None
+        for l in sorted(range(j, j + degree + 1), key=lambda l: abs(2 * l - 2 * j - degree)):
+            a, b = new_knots[l], new_knots[l + 1]
+            if a < b and lo <= a and b <= hi:
+                old = self.span_of((a + b) / 2)
+                break
+        if old is None:
+            # the basis function of this control point vanishes on the domain (e.g. a
+            # (p+1)-fold end knot): its value is irrelevant; use the nearest segment
+            mid = sum(label, start=mpq(0)) / len(label) if label else lo
+            old = self.span_of(min(max(mid, lo), hi))
+        if degree == self._degree:
+            return self.polar_value(old, label)
+        if degree == self._degree + 1:  # Ramshaw (6.7)-(6.8): average over p-subsets
+            acc = None
+            for drop in range(degree):
+                val = self.polar_value(old, label[:drop] + label[drop + 1 :])
+                acc = val if acc is None else acc + val
+            return acc * mpq(1, degree)
+        raise DegreeError("elevation by one degree at a time")
+
+    def _clamped_knots(self) -> list:
+        p = self._degree
+        lo, hi = self.domain
+        return [lo] * (p + 1) + [k for k in self._knots if lo < k < hi] + [hi] * (p + 1)
+
+    def _same_on(self, other: "BSplineCurve") -> bool:
+        """Exact identity of the homogeneous spline functions on ``self``'s domain
+        (``p + 1`` points inside every span of the merged breakpoints)."""
+        lo, hi = self.domain
+        cuts = sorted(set(k for k in self._knots + other._knots if lo <= k <= hi))
+        p = self._degree
+        for a, b in zip(cuts[:-1], cuts[1:]):
+            for t in [a + (b - a) * mpq(i + 1, p + 2) for i in range(p + 1)]:
+                if not np.all(self.polar_value(self.span_of(t), [t] * p) == other.polar_value(other.span_of(t), [t] * p)):
+                    return False
+        return True
+
+    # ------------------------------------------------------------------ display and exchange
+    def to_sympy_pieces(self, t=None) -> list:
+        """Piecewise description ``[((a, b), sympy Matrix of the piece in t)]`` in the global parameter ``t``."""
+        import sympy
+
+        from ..exact.scalars import to_sympy as exact_to_sympy
+
+        t = sympy.Symbol("t") if t is None else t
+        out = []
+        for (a, b), piece in self.to_bezier():
+            u = sympy.Symbol("_s_")
+            s = (t - exact_to_sympy(a)) / (exact_to_sympy(b) - exact_to_sympy(a))
+            out.append(((a, b), piece.to_sympy(u).subs(u, s).applyfunc(sympy.expand)))
+        return out
 
     def to_sympy(self, t=None):
         """The curve as a sympy column ``Matrix`` of ``Piecewise`` rational functions of ``t``:

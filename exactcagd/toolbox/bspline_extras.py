@@ -9,8 +9,9 @@ clamping, degree elevation and knot removal are all the same computation.
 
 Contents (notes chapter 6):
 
-* :class:`SplineCurve` -- a (rational) B-spline on any knot vector, clamped or not
-  (the foundation's :class:`~exactcagd.geometry.bspline.BSplineCurve` is clamped only);
+* :class:`SplineCurve` -- the name this module has always used for
+  :class:`~exactcagd.geometry.bspline.BSplineCurve`, a (rational) B-spline on any knot
+  vector, clamped or not, whose methods carry the polar-form operations;
 * :func:`periodic_bspline` -- 6.5, closed curves;
 * :meth:`SplineCurve.clamp` -- 6.6, Bézier end conditions;
 * :meth:`SplineCurve.derivative` (6.10), :meth:`SplineCurve.greville` (6.9),
@@ -41,9 +42,8 @@ from gmpy2 import mpq
 from .. import limits
 from ..errors import DegreeError, DomainError, InputError, KnotError, NotSupportedError
 from ..exact import bernstein as bz
-from ..exact import knots as kn
 from ..exact.scalars import to_count, to_rational
-from ..geometry._validate import dehomogenize, homogeneous, point_array, weight_array
+from ..geometry._validate import point_array
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bspline import BSplineCurve
 
@@ -112,326 +112,11 @@ def segment_blossom(ctrl: np.ndarray, local_knots, args):
 
 
 # ---------------------------------------------------------------------------- spline curve
-class SplineCurve:
-    """A B-spline (or NURBS) curve on an arbitrary knot vector, exact.
-
-    Unlike :class:`~exactcagd.geometry.bspline.BSplineCurve` the knot vector need not
-    be clamped: periodic and uniform B-splines (notes 6.5) are the main use.  The
-    curve is defined on its domain ``[knots[p], knots[n]]`` (``n`` control points).
-
-    Parameters
-    ----------
-    control_points : ``n`` points of dimension ``d``
-    knots : ``n + p + 1`` non-decreasing numbers (standard convention)
-    weights : ``n`` positive numbers, optional
-
-    Examples
-    --------
-    >>> c = SplineCurve([[0, 0], [1, 2], [3, 2], [4, 0]], knots=[0, 1, 2, 3, 4, 5, 6])
-    >>> [span for span, _ in c.to_bezier()]
-    [(mpq(2,1), mpq(3,1)), (mpq(3,1), mpq(4,1))]
-    """
-
-    __slots__ = ("_hom", "_rational", "_knots", "_degree")
-
-    def __init__(self, control_points, knots, weights=None):
-        points = point_array(control_points, 1, "control_points")
-        knots = list(knots)
-        degree = len(knots) - points.shape[0] - 1
-        if degree < 0:
-            raise KnotError(f"{len(knots)} knots are too few for {points.shape[0]} control points")
-        self._knots = kn.check_knots(knots, points.shape[0], degree, clamped=False)
-        self._degree = degree
-        w = weight_array(weights, (points.shape[0],), "weights")
-        self._rational = w is not None
-        self._hom = homogeneous(points, w)
-
-    @classmethod
-    def _from_hom(cls, hom: np.ndarray, knots: tuple, rational: bool) -> "SplineCurve":
-        c = object.__new__(cls)
-        c._hom, c._knots, c._degree, c._rational = hom, tuple(knots), len(knots) - hom.shape[0] - 1, rational
-        return c
-
-    # ------------------------------------------------------------------ properties
-    @property
-    def degree(self) -> int:
-        return self._degree
-
-    @property
-    def knots(self) -> tuple:
-        return self._knots
-
-    @property
-    def dimension(self) -> int:
-        return self._hom.shape[1] - 1
-
-    @property
-    def is_rational(self) -> bool:
-        return self._rational
-
-    @property
-    def domain(self) -> tuple:
-        """``(knots[p], knots[n])``."""
-        return self._knots[self._degree], self._knots[self._hom.shape[0]]
-
-    @property
-    def control_points(self) -> tuple:
-        pts, _ = dehomogenize(self._hom)
-        return tuple(tuple(p) for p in pts)
-
-    @property
-    def weights(self) -> tuple | None:
-        return tuple(self._hom[:, -1]) if self._rational else None
-
-    def homogeneous(self) -> np.ndarray:
-        """Homogeneous control points ``(w P, w)`` (weights 1 for a polynomial curve)."""
-        return self._hom.copy()
-
-    def spans(self) -> list[int]:
-        """Indices ``l`` of the non-empty knot spans ``[knots[l], knots[l+1]]`` of the domain."""
-        p, n = self._degree, self._hom.shape[0]
-        return [l for l in range(p, n) if self._knots[l] < self._knots[l + 1]]
-
-    def breakpoints(self) -> tuple:
-        lo, hi = self.domain
-        return tuple(sorted(set(k for k in self._knots if lo <= k <= hi)))
-
-    # ------------------------------------------------------------------ polar form
-    def segment(self, l: int) -> tuple[np.ndarray, tuple]:
-        """Control points (homogeneous) and ``2p`` local knots of the segment over span ``l``."""
-        p = self._degree
-        if l not in self.spans():
-            raise DomainError(f"span {l} is not a non-empty span of the domain")
-        return self._hom[l - p : l + 1], self._knots[l - p + 1 : l + p + 1]
-
-    def polar_value(self, l: int, args) -> np.ndarray:
-        """Homogeneous polar value ``f_l(args)`` of the segment over span ``l``."""
-        ctrl, local = self.segment(l)
-        if self._degree == 0:
-            if len(args):
-                raise InputError("a degree-0 segment takes no polar arguments")
-            return ctrl[0]
-        return segment_blossom(ctrl, local, list(args))
-
-    def span_of(self, t) -> int:
-        """The span index containing ``t`` (the last span for the right end of the domain)."""
-        t = to_rational(t, where="t")
-        lo, hi = self.domain
-        if not lo <= t <= hi:
-            raise DomainError(f"parameter {t} outside the domain [{lo}, {hi}]")
-        spans = self.spans()
-        if t == hi:
-            return spans[-1]
-        l = bisect.bisect_right(self._knots, t) - 1
-        return l
-
-    def _span_covering(self, a, b) -> int:
-        """Old span containing the midpoint of ``[a, b]`` (a span of the new knot vector).
-
-        For a refinement the new span lies inside it; for knot removal it is one of the
-        old spans inside the new one (the caller verifies the result).
-        """
-        return self.span_of((a + b) / 2)
-
-    def _label_point(self, new_knots: tuple, j: int, degree: int) -> np.ndarray:
-        """Control point ``j`` (degree ``degree``) over ``new_knots``: a blossom of the old spline.
-
-        The span used is one of the non-empty spans ``l`` in ``[j, j + degree]`` of the
-        new knot vector that lies inside the old domain (theory: any of them gives the
-        same value when the old spline belongs to the new spline space).
-        """
-        label = new_knots[j + 1 : j + degree + 1]
-        lo, hi = self.domain
-        old = None
-        for l in sorted(range(j, j + degree + 1), key=lambda l: abs(2 * l - 2 * j - degree)):
-            a, b = new_knots[l], new_knots[l + 1]
-            if a < b and lo <= a and b <= hi:
-                old = self._span_covering(a, b)
-                break
-        if old is None:
-            # the basis function of this control point vanishes on the domain (e.g. a
-            # (p+1)-fold end knot): its value is irrelevant; use the nearest segment
-            mid = sum(label, start=mpq(0)) / len(label) if label else lo
-            old = self.span_of(min(max(mid, lo), hi))
-        if degree == self._degree:
-            return self.polar_value(old, label)
-        if degree == self._degree + 1:  # Ramshaw (6.7)-(6.8): average over p-subsets
-            acc = None
-            for drop in range(degree):
-                val = self.polar_value(old, label[:drop] + label[drop + 1 :])
-                acc = val if acc is None else acc + val
-            return acc * mpq(1, degree)
-        raise DegreeError("elevation by one degree at a time")
-
-    # ------------------------------------------------------------------ evaluation
-    def evaluate(self, t) -> tuple:
-        """Exact point at ``t`` (de Boor, notes 6.8: ``f(t, ..., t)``)."""
-        t = to_rational(t, where="t")
-        value = self.polar_value(self.span_of(t), [t] * self._degree)
-        return _project(value)
-
-    __call__ = evaluate
-
-    def to_bezier(self) -> list[tuple[tuple, BezierCurve]]:
-        """Bézier pieces by polar form (notes 6.3): control point ``i`` is ``f(a^{p-i}, b^i)``."""
-        p = self._degree
-        out = []
-        for l in self.spans():
-            a, b = self._knots[l], self._knots[l + 1]
-            hom = np.stack([self.polar_value(l, [a] * (p - i) + [b] * i) for i in range(p + 1)])
-            out.append(((a, b), _bezier(hom, self._rational)))
-        return out
-
-    def rebase(self, new_knots) -> "SplineCurve":
-        """The same curve over another knot vector of the same degree (control points = blossoms).
-
-        Knot insertion (6.7) when ``new_knots`` refines the old ones; knot removal when
-        the curve happens to lie in the coarser space -- then the result is verified to
-        reproduce the curve exactly (:class:`KnotError` otherwise).  The
-        new domain must lie inside the old one.
-        """
-        p = self._degree
-        ks = tuple(to_rational(k, where="new knot") for k in new_knots)
-        n_new = len(ks) - p - 1
-        ks = kn.check_knots(ks, n_new, p, clamped=False)
-        lo, hi = self.domain
-        if not (lo <= ks[p] and ks[n_new] <= hi):
-            raise DomainError(f"new domain [{ks[p]}, {ks[n_new]}] is not inside [{lo}, {hi}]")
-        hom = np.stack([self._label_point(ks, j, p) for j in range(n_new)])
-        out = SplineCurve._from_hom(hom, ks, self._rational)
-        if not _refines(ks, self._knots, ks[p], ks[n_new]):
-            if not out._same_on(self):
-                raise KnotError("the curve does not lie in the spline space of the new knot vector")
-        return out
-
-    def insert_knots(self, values) -> "SplineCurve":
-        """Insert the given knots (each inside the domain) at once (notes 6.7)."""
-        vals = [to_rational(v, where="inserted knot") for v in values]
-        lo, hi = self.domain
-        for v in vals:
-            if not lo < v < hi:
-                raise DomainError(f"inserted knot {v} is not inside the open domain ({lo}, {hi})")
-        return self.rebase(sorted(self._knots + tuple(vals)))
-
-    def clamp(self) -> BSplineCurve:
-        """Bézier end conditions (notes 6.6): the same curve with ``(p+1)``-fold end knots.
-
-        Returns a foundation :class:`~exactcagd.geometry.bspline.BSplineCurve` over the
-        same domain; it interpolates its end control points.
-        """
-        p = self._degree
-        lo, hi = self.domain
-        interior = [k for k in self._knots if lo < k < hi]
-        new = self.rebase([lo] * (p + 1) + interior + [hi] * (p + 1))
-        pts, w = dehomogenize(new._hom)
-        return BSplineCurve(pts, new._knots, weights=w if self._rational else None)
-
-    def greville(self) -> tuple:
-        """Greville abscissae (notes (6.1)): averages of the ``p`` knots of each polar label."""
-        p = self._degree
-        if p == 0:
-            raise DegreeError("Greville abscissae need degree >= 1")
-        return tuple(sum(self._knots[i + 1 : i + p + 1]) / p for i in range(self._hom.shape[0]))
-
-    def derivative(self) -> "SplineCurve":
-        """Hodograph (notes (6.2)): ``H_i = p (P_{i+1} - P_i) / (t_{i+p+1} - t_{i+1})``, knots minus the ends.
-
-        Polynomial curves only.  A zero denominator (a ``(p+1)``-fold knot) is not
-        possible inside the domain; at the ends the coefficient is irrelevant and set to 0.
-        """
-        if self._rational:
-            raise NotSupportedError("the hodograph of a rational spline is not a spline of lower degree")
-        p = self._degree
-        if p == 0:
-            raise DegreeError("the derivative of a degree-0 spline is not a spline")
-        pts = self._hom[:, :-1]
-        rows = []
-        for i in range(pts.shape[0] - 1):
-            den = self._knots[i + p + 1] - self._knots[i + 1]
-            rows.append((pts[i + 1] - pts[i]) * (mpq(p) / den) if den != 0 else pts[i] * 0)
-        hom = homogeneous(np.stack(rows), None)
-        return SplineCurve._from_hom(hom, self._knots[1:-1], False)
-
-    def elevate(self) -> "SplineCurve":
-        """Degree elevation by one (Ramshaw, notes (6.7)-(6.8)) of the clamped curve.
-
-        The curve is first given Bézier end conditions; every knot's multiplicity then
-        rises by one, and the control point with label ``(u_1..u_{p+1})`` is the average of
-        the old polar values over the ``p``-subsets of the label.
-        """
-        p = self._degree
-        base = self if self._is_clamped() else self.rebase(self._clamped_knots())
-        values = sorted(set(base._knots))
-        new = tuple(v for v in values for _ in range(base._knots.count(v) + 1))
-        n_new = len(new) - (p + 1) - 1
-        hom = np.stack([base._label_point(new, j, p + 1) for j in range(n_new)])
-        return SplineCurve._from_hom(hom, new, self._rational)
-
-    # ------------------------------------------------------------------ helpers
-    def _is_clamped(self) -> bool:
-        p = self._degree
-        return len(set(self._knots[: p + 1])) == 1 and len(set(self._knots[-p - 1 :])) == 1
-
-    def _clamped_knots(self) -> list:
-        p = self._degree
-        lo, hi = self.domain
-        return [lo] * (p + 1) + [k for k in self._knots if lo < k < hi] + [hi] * (p + 1)
-
-    def _same_on(self, other: "SplineCurve") -> bool:
-        """Exact identity of the homogeneous spline functions on ``self``'s domain."""
-        lo, hi = self.domain
-        cuts = sorted(set(k for k in self._knots + other._knots if lo <= k <= hi))
-        p = self._degree
-        for a, b in zip(cuts[:-1], cuts[1:]):
-            for t in [a + (b - a) * mpq(i + 1, p + 2) for i in range(p + 1)]:
-                if not np.all(self.polar_value(self.span_of(t), [t] * p) == other.polar_value(other.span_of(t), [t] * p)):
-                    return False
-        return True
-
-    def to_sympy(self, t=None) -> list:
-        """Piecewise description: ``[((a, b), sympy Matrix of the piece in t)]`` (global parameter)."""
-        import sympy
-
-        from ..exact.scalars import to_sympy
-
-        t = sympy.Symbol("t") if t is None else t
-        out = []
-        for (a, b), piece in self.to_bezier():
-            s = (t - to_sympy(a)) / (to_sympy(b) - to_sympy(a))
-            out.append(((a, b), _sub(piece, s)))
-        return out
-
-    def __repr__(self) -> str:
-        kind = "rational " if self._rational else ""
-        return f"<{kind}SplineCurve degree={self._degree} points={self._hom.shape[0]} knots={len(self._knots)}>"
-
-
-def _sub(piece: BezierCurve, s):
-    import sympy
-
-    u = sympy.Symbol("_s_")
-    return piece.to_sympy(u).subs(u, s).applyfunc(sympy.expand)
-
-
-def _refines(new: tuple, old: tuple, lo, hi) -> bool:
-    """Does ``new`` contain every old knot strictly inside ``(lo, hi)`` with at least its multiplicity?"""
-    for v in set(k for k in old if lo < k < hi):
-        if new.count(v) < old.count(v):
-            return False
-    return True
-
-
-def _project(hom) -> tuple:
-    w = hom[-1]
-    if w == 0:
-        raise DomainError("the rational spline has a pole here (weight zero)")
-    return tuple(x / w for x in hom[:-1])
-
-
-def _bezier(hom: np.ndarray, rational: bool) -> BezierCurve:
-    if rational:
-        return BezierCurve.from_homogeneous(hom)
-    return BezierCurve._trusted(hom[:, :-1].copy(), None)
+#: A B-spline (or NURBS) curve on any knot vector: the geometry layer's class, which
+#: carries the polar-form operations (``rebase``, ``insert_knots``, ``clamp``,
+#: ``greville``, ``derivative``, ``elevate``, ``polar_value``, ...).  Kept under this
+#: name for the toolbox's callers; ``SplineCurve is BSplineCurve``.
+SplineCurve = BSplineCurve
 
 
 # ---------------------------------------------------------------------------- periodic (6.5)
@@ -633,9 +318,7 @@ def bezier_chain_to_bspline(curves, spans=None) -> BSplineCurve:
         knots += [breaks[i]] * max(p - r, 0)
     knots += [breaks[-1]] * (p + 1)
     chain = _c0_chain(curves, breaks)
-    out = chain.rebase(knots)
-    pts, _ = dehomogenize(out._hom)
-    return BSplineCurve(pts, out._knots)
+    return chain.rebase(knots)
 
 
 def _c1_ratio(prev: BezierCurve, nxt: BezierCurve):

@@ -1,0 +1,155 @@
+"""One B-spline curve class for every knot vector (issue 19.4).
+
+``geometry.BSplineCurve`` accepts clamped and unclamped knot vectors and carries the
+polar-form operations that used to live in ``toolbox.SplineCurve`` (now the same class).
+References are independent of the code under test: sympy's Cox-de Boor basis
+(``sympy.bspline_basis_set``) and sympy substitution into the pieces.
+"""
+
+from __future__ import annotations
+
+import pickle
+from fractions import Fraction
+
+import pytest
+import sympy
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from exactcagd.errors import DomainError, KnotError
+from exactcagd.geometry.bspline import BSplineCurve
+from exactcagd.toolbox import bspline_extras as bx
+
+FAST = settings(max_examples=12, deadline=None)
+T = sympy.Symbol("t")
+
+
+@st.composite
+def unclamped_curves(draw, max_degree=3, dim=2, rational=False):
+    """A random curve on a knot vector whose first and last ``p + 1`` knots are not all equal."""
+    p = draw(st.integers(1, max_degree))
+    n = draw(st.integers(p + 1, p + 3))
+    gaps = draw(st.lists(st.integers(1, 3), min_size=n + p, max_size=n + p))
+    ks = [Fraction(0)]
+    for g in gaps:
+        ks.append(ks[-1] + Fraction(g, 2))
+    # an optional interior knot of multiplicity up to p (lo < v < hi) keeps the vector valid
+    if n > p + 1 and draw(st.booleans()):
+        i = draw(st.integers(p + 1, n - 1))
+        m = draw(st.integers(2, p)) if p > 1 else 1
+        ks = ks[:i] + [ks[i]] * m + ks[i + 1 : len(ks) - m + 1]  # same length, still non-decreasing
+    coords = st.integers(-4, 4).map(Fraction)
+    pts = draw(st.lists(st.lists(coords, min_size=dim, max_size=dim), min_size=n, max_size=n))
+    weights = draw(st.lists(st.integers(1, 4).map(Fraction), min_size=n, max_size=n)) if rational else None
+    return BSplineCurve(pts, ks, weights=weights), pts, ks, weights
+
+
+def cox_de_boor(pts, ks, p, weights=None):
+    """The curve as sympy expressions by ``sympy.bspline_basis_set`` (independent reference)."""
+    basis = sympy.bspline_basis_set(p, [sympy.Rational(k.numerator, k.denominator) for k in ks], T)
+    w = [1] * len(pts) if weights is None else [sympy.Rational(x.numerator, x.denominator) for x in weights]
+    den = sum(b * wi for b, wi in zip(basis, w))
+    return [sum(b * wi * sympy.Rational(q[k].numerator, q[k].denominator) for b, wi, q in zip(basis, w, pts)) / den
+            for k in range(len(pts[0]))]
+
+
+def sample_parameters(c):
+    """Left end, interior knots and three points inside every span (sympy's basis is half-open on the right)."""
+    out = []
+    for l in c.spans():
+        a, b = c.knots[l], c.knots[l + 1]
+        out += [a + (b - a) * Fraction(i, 4) for i in range(4)]
+    return out
+
+
+def as_sympy(x):
+    return sympy.Rational(int(x.numerator), int(x.denominator))
+
+
+@given(unclamped_curves())
+@FAST
+def test_evaluation_agrees_with_sympy_cox_de_boor(case):
+    c, pts, ks, _w = case
+    ref = cox_de_boor(pts, ks, c.degree)
+    for t in sample_parameters(c):
+        assert [as_sympy(x) for x in c.evaluate(t)] == [r.subs(T, as_sympy(t)) for r in ref]
+
+
+@given(unclamped_curves(max_degree=2, rational=True))
+@FAST
+def test_rational_evaluation_agrees_with_sympy_cox_de_boor(case):
+    c, pts, ks, w = case
+    ref = cox_de_boor(pts, ks, c.degree, w)
+    for t in sample_parameters(c)[::2]:
+        assert [as_sympy(x) for x in c.evaluate(t)] == [sympy.simplify(r.subs(T, as_sympy(t))) for r in ref]
+
+
+@given(unclamped_curves())
+@FAST
+def test_right_end_of_the_domain(case):
+    """At ``hi = knots[n]`` sympy's half-open basis already belongs to the next span, but the
+    generated vectors continue beyond ``hi`` with ``hi`` of multiplicity <= p, so the spline
+    is continuous there and the Cox-de Boor sum at ``hi`` is the curve's end point."""
+    c, pts, ks, _w = case
+    hi = c.domain[1]
+    assert hi < ks[-1] and ks.count(hi) <= c.degree
+    ref = cox_de_boor(pts, ks, c.degree)
+    assert [as_sympy(x) for x in c.evaluate(hi)] == [r.subs(T, as_sympy(hi)) for r in ref]
+
+
+@given(unclamped_curves())
+@FAST
+def test_to_sympy_and_bezier_pieces_agree_with_evaluation(case):
+    c, _pts, _ks, _w = case
+    expr = c.to_sympy(T)
+    pieces = c.to_bezier()
+    assert [span for span, _ in pieces] == [(c.knots[l], c.knots[l + 1]) for l in c.spans()]
+    for (a, b), piece in pieces:
+        for i in range(3):
+            t = a + (b - a) * Fraction(i, 2)
+            assert piece.evaluate(Fraction(i, 2)) == c.evaluate(t)
+            assert [expr[k].subs(T, as_sympy(t)) for k in range(c.dimension)] == [as_sympy(x) for x in c.evaluate(t)]
+
+
+@given(unclamped_curves(), st.data())
+@FAST
+def test_clamp_insert_and_elevate_keep_the_curve(case, data):
+    c, _pts, _ks, _w = case
+    lo, hi = c.domain
+    clamped = c.clamp()
+    assert clamped.is_clamped and not c.is_clamped
+    assert clamped.control_points[0] == c.evaluate(lo) and clamped.control_points[-1] == c.evaluate(hi)
+    t = lo + (hi - lo) * Fraction(data.draw(st.integers(1, 6)), 7)
+    inserted = c.insert_knot(t)
+    elevated = c.elevate()
+    assert elevated.degree == c.degree + 1
+    for s in sample_parameters(c):
+        assert clamped.evaluate(s) == inserted.evaluate(s) == elevated.evaluate(s) == c.evaluate(s)
+
+
+@given(unclamped_curves(rational=True))
+@FAST
+def test_value_equality_hash_and_round_trips(case):
+    c, pts, ks, w = case
+    twin = BSplineCurve(pts, ks, weights=w)
+    assert c == twin and hash(c) == hash(twin)
+    assert BSplineCurve.from_dict(c.to_dict()) == c
+    assert pickle.loads(pickle.dumps(c)) == c
+    moved = BSplineCurve([[x + 1 for x in q] for q in pts], ks, weights=w)
+    assert moved != c
+
+
+def test_toolbox_spline_curve_is_the_geometry_class():
+    assert bx.SplineCurve is BSplineCurve
+    c = bx.SplineCurve([[0, 0], [1, 2], [3, 2], [4, 0]], range(7))
+    assert isinstance(c, BSplineCurve) and not c.is_clamped
+    assert c.evaluate(3) == (2, 2)  # uniform quadratic at a knot: the midpoint (P1 + P2)/2
+    assert bx.periodic_bspline([[0, 0], [2, 0], [2, 2], [0, 2]], 2) == bx.periodic_bspline([[0, 0], [2, 0], [2, 2], [0, 2]], 2)
+
+
+def test_unclamped_errors_name_the_argument():
+    c = BSplineCurve([[0, 0], [1, 1], [2, 0]], [0, 1, 2, 3, 4, 5])
+    with pytest.raises(DomainError):
+        c.evaluate(9)
+    with pytest.raises(KnotError, match="knots"):
+        BSplineCurve([[0, 0], [1, 1], [2, 0]], [0, 1, 1, 1, 2, 3])  # interior knot 1 of multiplicity 3 > degree 2
