@@ -153,3 +153,47 @@ def test_unclamped_errors_name_the_argument():
         c.evaluate(9)
     with pytest.raises(KnotError, match="knots"):
         BSplineCurve([[0, 0], [1, 1], [2, 0]], [0, 1, 1, 1, 2, 3])  # interior knot 1 of multiplicity 3 > degree 2
+
+
+def test_composition_across_patches_with_an_unclamped_domain_curve():
+    """compose_spline reads the curve through to_bezier: an unclamped domain curve gives the same
+    pieces as its clamped twin, and every piece is the surface at the curve (de Boor, checked above
+    against sympy) at a rational point inside and at the rational ends."""
+    from exactcagd.composition import compose_spline
+    from exactcagd.composition.splines import rational_between
+    from exactcagd.exact.algebraic import RealAlgebraic
+    from exactcagd.geometry.bspline import BSplineSurface
+
+    F = Fraction
+    net = [[[F(i, 4), F(j, 4), F((i * i + 2 * j * j + i * j) % 5, 5)] for j in range(5)] for i in range(5)]
+    surface = BSplineSurface(net, [0, 0, 0, F(1, 3), F(2, 3), 1, 1, 1], [0, 0, 0, F(1, 2), F(1, 2), 1, 1, 1])
+    pts = [[F(1, 10), F(1, 10)], [F(9, 10), F(2, 10)], [F(5, 10), F(9, 10)], [F(1, 10), F(6, 10)]]
+    curve = BSplineCurve(pts, [F(-1, 2), F(-1, 4), 0, F(1, 2), 1, F(5, 4), F(3, 2)])
+    assert not curve.is_clamped and curve.domain == (0, 1)
+    result = compose_spline(surface, curve)
+    twin = compose_spline(surface, curve.clamp())
+    assert [piece.interval for piece in result.pieces] == [piece.interval for piece in twin.pieces]
+    for piece in result.pieces:
+        a, b = piece.interval
+        inner = rational_between(a, b)
+        assert piece.evaluate(inner) == surface.evaluate(*curve.evaluate(inner))
+        for end in (a, b):
+            if not isinstance(end, RealAlgebraic):
+                assert piece.evaluate(end) == surface.evaluate(*curve.evaluate(end))
+
+
+@given(unclamped_curves(rational=True))
+@FAST
+def test_float_sampling_of_unclamped_curves(case):
+    """numeric.sampling's vectorised Cox-de Boor (basis_matrix) on an unclamped curve: within 1e-12
+    of the exact point, domain ends included."""
+    import numpy as np
+
+    from exactcagd.numeric.sampling import sample_curve
+
+    c, _pts, _ks, _w = case
+    lo, hi = c.domain
+    ts = [lo + (hi - lo) * Fraction(i, 8) for i in range(9)]
+    got = sample_curve(c, np.array([float(t) for t in ts]))
+    want = np.array([[float(x) for x in c.evaluate(t)] for t in ts])
+    assert np.allclose(got, want, rtol=0, atol=1e-12 * (1 + np.abs(want).max()))

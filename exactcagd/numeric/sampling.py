@@ -34,6 +34,8 @@ def basis_matrix(knots, degree: int, ts: np.ndarray) -> np.ndarray:
     lo, hi = U[degree], U[n]
     ts = np.clip(ts, lo, hi)
     span = np.searchsorted(U, ts, side="right") - 1
+    # at the right end use the last non-empty span (an unclamped hi may be a repeated knot)
+    span = np.where(ts == hi, np.searchsorted(U, hi, side="left") - 1, span)
     span = np.clip(span, degree, n - 1)
     # de Boor-Cox triangle for the p + 1 non-zero functions of each parameter
     N = np.zeros((len(ts), degree + 1))
