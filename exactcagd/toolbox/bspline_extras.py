@@ -13,9 +13,9 @@ Contents (notes chapter 6):
   :class:`~exactcagd.geometry.bspline.BSplineCurve`, a (rational) B-spline on any knot
   vector, clamped or not, whose methods carry the polar-form operations;
 * :func:`periodic_bspline` -- 6.5, closed curves;
-* :meth:`SplineCurve.clamp` -- 6.6, Bézier end conditions;
-* :meth:`SplineCurve.derivative` (6.10), :meth:`SplineCurve.greville` (6.9),
-  :meth:`SplineCurve.elevate` (Ramshaw's rule (6.7)-(6.8));
+* ``clamp`` -- 6.6, Bézier end conditions; ``derivative`` (6.10), ``greville`` (6.9),
+  ``elevate`` (Ramshaw's rule (6.7)-(6.8)): methods of
+  :class:`~exactcagd.geometry.bspline.BSplineCurve`, built on the polar form;
 * :func:`symmetric_basis`, :func:`polar_form_power` -- 6.11, symmetric polynomials;
 * :func:`bezier_chain_to_bspline`, :func:`continuity_order` -- 6.12;
 * :func:`basis_function`, :func:`basis_function_pieces`, :func:`refine_basis_function`,
