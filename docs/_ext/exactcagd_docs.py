@@ -318,6 +318,22 @@ def generate(app) -> None:
     gallery_pages(folder)
 
 
+def ledger_pages(app, exception) -> None:
+    """The committed ledger (``proofs/ledger.json``) rendered as browsable pages under
+    ``ledger/`` of the HTML output: status colours, printed vs corrected formulae, the
+    counterexamples and each check's source (``exactcagd.proofs.ledger_html``)."""
+    if exception is not None or app.builder.name != "html":
+        return
+    from exactcagd.proofs.ledger_html import render_pages
+
+    payload = json.loads((ROOT / "proofs" / "ledger.json").read_text())
+    out = Path(app.outdir) / "ledger"
+    out.mkdir(exist_ok=True)
+    for name, html in render_pages(payload).items():
+        (out / name).write_text(html, encoding="utf-8")
+
+
 def setup(app):
     app.connect("builder-inited", generate)
+    app.connect("build-finished", ledger_pages)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}
