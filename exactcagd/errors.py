@@ -27,7 +27,8 @@ class WeightError(InputError):
 
 
 class KnotError(InputError):
-    """A knot vector is decreasing, not clamped, or of the wrong length."""
+    """A knot vector is decreasing, of the wrong length, has a knot of too high a multiplicity, or
+    is not clamped where an operation needs a clamped one."""
 
 
 class DomainError(ExactCAGDError, ValueError):

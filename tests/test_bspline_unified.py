@@ -197,3 +197,17 @@ def test_float_sampling_of_unclamped_curves(case):
     got = sample_curve(c, np.array([float(t) for t in ts]))
     want = np.array([[float(x) for x in c.evaluate(t)] for t in ts])
     assert np.allclose(got, want, rtol=0, atol=1e-12 * (1 + np.abs(want).max()))
+
+
+def test_bezier_extraction_of_degree_zero_splines():
+    """Degree 0: each non-empty span is the constant of its own control point (a repeated
+    knot makes an empty span whose point never shows); the exact layer's extraction used to
+    hand every span the first point."""
+    import numpy as np
+
+    from exactcagd.exact.knots import extract_bezier
+
+    points = np.array([[1], [2], [3], [4]], dtype=object)
+    pieces = extract_bezier(points, (0, 1, 2, 2, 3), 0)
+    assert [(a, b) for (a, b), _ in pieces] == [(0, 1), (1, 2), (2, 3)]
+    assert [int(c[0][0]) for _, c in pieces] == [1, 2, 4]

@@ -164,12 +164,13 @@ def extract_bezier(points: np.ndarray, knots: tuple, degree: int) -> list[tuple[
         need = p - multiplicity(knots, value)
         if need > 0:
             points, knots = insert_knot(points, knots, p, value, need)
-    breaks = sorted(set(k for k in knots if lo <= k <= hi))
-    pieces = []
-    for idx, (a, b) in enumerate(zip(breaks[:-1], breaks[1:])):
-        start = idx * p
-        pieces.append(((a, b), points[start : start + p + 1].copy()))
-    return pieces
+    # after the insertions every non-empty span [knots[k], knots[k+1]] is a Bezier piece
+    # whose coefficients are its local control points P_{k-p} .. P_k (degree 0 included)
+    return [
+        ((knots[k], knots[k + 1]), points[k - p : k + 1].copy())
+        for k in range(p, len(knots) - p - 1)
+        if knots[k] < knots[k + 1]
+    ]
 
 
 def blossom_de_boor(points: np.ndarray, knots: tuple, degree: int, k: int, args) -> object:
