@@ -211,3 +211,50 @@ def test_bezier_extraction_of_degree_zero_splines():
     pieces = extract_bezier(points, (0, 1, 2, 2, 3), 0)
     assert [(a, b) for (a, b), _ in pieces] == [(0, 1), (1, 2), (2, 3)]
     assert [int(c[0][0]) for _, c in pieces] == [1, 2, 4]
+
+
+def _cox_de_boor_surface(net, knots_u, knots_v, p, q, weights, u, v):
+    """Independent reference: sympy.bspline_basis_set in u and v, tensor product, projected.
+    At the right domain end the last non-empty basis functions are taken as the limit from the left."""
+    x, y = sympy.symbols("x y")
+    bu = sympy.bspline_basis_set(p, [sympy.Rational(k) for k in knots_u], x)
+    bv = sympy.bspline_basis_set(q, [sympy.Rational(k) for k in knots_v], y)
+    at_u = [sympy.limit(b, x, u, "-") if u == knots_u[-1] else b.subs(x, u) for b in bu]
+    at_v = [sympy.limit(b, y, v, "-") if v == knots_v[-1] else b.subs(y, v) for b in bv]
+    dim = len(net[0][0])
+    hom = [0] * (dim + 1)
+    for i, row in enumerate(net):
+        for j, point in enumerate(row):
+            w = 1 if weights is None else sympy.Rational(weights[i][j])
+            basis = at_u[i] * at_v[j] * w
+            for k in range(dim):
+                hom[k] += basis * sympy.Rational(point[k])
+            hom[dim] += basis
+    return tuple(sympy.nsimplify(h / hom[dim]) for h in hom[:dim])
+
+
+@pytest.mark.parametrize("rational", [False, True])
+def test_surface_to_sympy_matches_evaluate_and_cox_de_boor(rational):
+    """BSplineSurface.to_sympy at random exact (u, v) (knots and domain corners included) equals
+    evaluate() and an independent tensor-product Cox-de Boor (sympy.bspline_basis_set)."""
+    import random
+
+    from exactcagd.geometry.bspline import BSplineSurface
+
+    rng = random.Random(19 + rational)
+    knots_u, knots_v = [0, 0, 0, 1, 3, 3, 3], [0, 0, 1, Fraction(5, 2), 4, 4]  # degrees (2, 1)
+    net = [[[rng.randint(-5, 5), rng.randint(-5, 5), rng.randint(-5, 5)] for _ in range(4)] for _ in range(4)]
+    weights = [[Fraction(rng.randint(1, 6), rng.randint(1, 3)) for _ in range(4)] for _ in range(4)] if rational else None
+    s = BSplineSurface(net, knots_u, knots_v, weights)
+    u, v = sympy.symbols("u v")
+    expr = s.to_sympy()
+    assert expr.shape == (3, 1)
+    points = [(0, 0), (3, 4), (1, 1), (3, Fraction(5, 2))]
+    points += [(Fraction(rng.randint(0, 300), 100), Fraction(rng.randint(0, 400), 100)) for _ in range(6)]
+    for a, b in points:
+        got = tuple(expr.subs({u: sympy.Rational(a), v: sympy.Rational(b)}))
+        want = _cox_de_boor_surface(net, knots_u, knots_v, 2, 1, weights, sympy.Rational(a), sympy.Rational(b))
+        assert got == want, (a, b)
+        assert got == tuple(sympy.Rational(int(x.numerator), int(x.denominator)) for x in s.evaluate(a, b))
+    assert s._repr_latex_().startswith("$S(u, v) = ")
+    assert all(isinstance(row, sympy.Piecewise) for row in expr)

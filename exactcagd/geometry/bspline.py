@@ -616,6 +616,45 @@ class BSplineSurface(_ByValue):
                 out[(i, j)] = ((u_span, v_span), surface)
         return out
 
+    def to_sympy(self, u=None, v=None):
+        r"""The surface as a sympy column ``Matrix`` of ``Piecewise`` rational functions of ``u, v``.
+
+        Tensor product of :meth:`BSplineCurve.to_sympy`'s construction: on each pair of knot
+        spans ``[a, b) x [c, d)`` (the last span of each direction closed) the exact Bézier
+        patch of :meth:`to_bezier_patches` at ``((u - a)/(b - a), (v - c)/(d - c))``
+        (notes 15.5, tensor-product B-splines; 6.3 for the pieces).
+
+        >>> net = [[[i, j, i * j] for j in range(3)] for i in range(3)]
+        >>> s = BSplineSurface(net, [0, 0, 1, 2, 2], [0, 0, 0, 1, 1, 1])
+        >>> import sympy
+        >>> u, v = sympy.symbols("u v")
+        >>> s.to_sympy().subs({u: sympy.Rational(3, 2), v: sympy.Rational(1, 3)}).T
+        Matrix([[3/2, 2/3, 1]])
+        """
+        import sympy
+
+        from ..exact.scalars import to_sympy as exact_to_sympy
+
+        u = sympy.Symbol("u") if u is None else u
+        v = sympy.Symbol("v") if v is None else v
+        patches = sorted(self.to_bezier_patches().items())
+        last_i = max(i for i, _ in (key for key, _ in patches))
+        last_j = max(j for _, j in (key for key, _ in patches))
+        rows = [[] for _ in range(self.dimension)]
+        for (i, j), (((a, b), (c, d)), patch) in patches:
+            a, b, c, d = (exact_to_sympy(x) for x in (a, b, c, d))
+            local = patch.to_sympy((u - a) / (b - a), (v - c) / (d - c))
+            inside = sympy.And((u <= b) if i == last_i else (u < b), (v <= d) if j == last_j else (v < d))
+            for k in range(self.dimension):
+                rows[k].append((sympy.cancel(local[k]), inside))
+        return sympy.Matrix([sympy.Piecewise(*branches) for branches in rows])
+
+    def _repr_latex_(self) -> str:
+        """Jupyter shows the surface typeset, patch by patch."""
+        from ._display import latex
+
+        return latex(self, "S(u, v)")
+
     def bezier_patch(self, i: int, j: int) -> tuple[tuple, BezierSurface]:
         """The single Bézier patch over the ``i``-th u span and ``j``-th v span."""
         return self.to_bezier_patches(u_spans={i}, v_spans={j})[(i, j)]
