@@ -7,7 +7,7 @@ Prints every step exactly and writes examples/output/teach/ch02_extras.png.
 
 from __future__ import annotations
 
-from _teach import fmt, out_path, plt, polygon, sample, step
+from _teach import fmt, out_path, plt, polygon, sample, step, tex
 from exactcagd import BezierCurve
 from exactcagd.toolbox import bezier_extras as bx
 
@@ -19,33 +19,46 @@ _trace_curvature()
 d = bx.derivatives_at(c, 0, 2)
 print("P(0), P'(0), P''(0) by the quotient rule to any order:", fmt(d))
 print("(2.11) P'(0) = (w1/w0) n (P1 - P0) =", fmt(bx.end_first_derivative(c)), "; (2.12) P''(0) =", fmt(bx.end_second_derivative(c)))
+tex("(P(0), P'(0), P''(0))", list(d), echo=False)
+tex("(2.11) P'(0)", list(bx.end_first_derivative(c)), echo=False)
+tex("(2.12) P''(0)", list(bx.end_second_derivative(c)), echo=False)
 kappa = bx.curvature(c, 0)
 normal = (-d[1][1], d[1][0])
 scale = (1 / float(kappa)) / (float(normal[0]) ** 2 + float(normal[1]) ** 2) ** 0.5
 centre = (float(normal[0]) * scale, float(normal[1]) * scale)
 print("osculating circle: radius 1/kappa =", 1 / kappa, " centre ~", tuple(round(v, 4) for v in centre))
+tex("kappa(0)", kappa, echo=False)
+tex("1/kappa(0)", 1 / kappa, echo=False)
 
 step("2.10 continuity of two quadratics at the joint")
 p = BezierCurve([[0, 0], [1, 1], [2, 0]])
 for q in (BezierCurve([[2, 0], [3, -1], [5, 0]]), BezierCurve([[2, 0], [4, -2], [5, 0]])):
     k, betas = bx.geometric_continuity(p, q)
     print("Q =", fmt(q.control_points), ": C^%s" % bx.parametric_continuity(p, q), " G^%d with beta =" % k, fmt(betas))
+    tex("Q = %s: beta" % fmt(q.control_points), list(betas), echo=False)
 
 step("2.11 a 270-degree arc of radius 5 as exact rational quadratics")
 arcs = bx.circular_arc((0, 0), (5, 0), (0, -5))
 for a in arcs:
     print("  points", fmt(a.control_points), " weights", fmt(a.weights))
+    tex("arc points", [list(pt) for pt in a.control_points], echo=False)
+    tex("arc weights", list(a.weights), echo=False)
 pts, w = bx.arc_symmetric_form((0, 0), (5, 0), (3, 4))
 print("standard form of the arc (5,0)->(3,4): w1 = cos(theta/2) =", w[1], "(exact, irrational)")
+tex("w_1 = cos(theta/2)", w[1], echo=False)
 
 step("2.12 b = -1 on a quarter circle: the rest of the circle")
 quarter = BezierCurve([[1, 0], [1, 1], [0, 1]], [1, 1, 2])
 rest = bx.mobius_reparametrize(quarter, -1)
 print("weights w_i (-1)^i:", fmt(rest.weights), "  midpoint:", fmt(rest.evaluate("1/2")))
+tex("w_i (-1)^i", list(rest.weights), echo=False)
+tex("P(1/2)", list(rest.evaluate("1/2")), echo=False)
 
 step("2.14-2.15 explicit curve y = f(x) and the area under it (average of the control values)")
 e = bx.explicit_curve([1, 3, 2, 0])
 print("control points:", fmt(e.control_points), "  area =", bx.area_under_explicit(e))
+tex("control points", [list(pt) for pt in e.control_points], echo=False)
+tex("area", bx.area_under_explicit(e), echo=False)
 
 fig, axs = plt.subplots(1, 3, figsize=(13, 4.3))
 ax = axs[0]
