@@ -10,32 +10,39 @@ from fractions import Fraction
 
 import numpy as np
 
-from _teach import fmt, out_path, plt, polygon, sample, step
+from _teach import fmt, out_path, plt, polygon, sample, step, tex
 from exactcagd import BezierCurve
 from exactcagd.toolbox.offsets import offset_curve, offset_cusps, offset_point, parabola_offset, pythagorean_hodograph
 
 step("(8.2) one offset point: exact in Q(sqrt |P'(t)|^2)")
 cubic = BezierCurve([[0, 0], [1, 2], [3, 1], [4, 4]])
 print("  P = cubic (0,0),(1,2),(3,1),(4,4); Omega(1/2, P)(1/3) =", offset_point(cubic, Fraction(1, 2), Fraction(1, 3)))
+tex("Omega(1/2, P)(1/3)", offset_point(cubic, Fraction(1, 2), Fraction(1, 3)), echo=False)
 print("  is it PH?", pythagorean_hodograph(cubic), "(None: x'^2 + y'^2 is not a square, the offset is not rational)")
 
 step("Pythagorean-hodograph cubic: P' = (1 - t^2, 2t), |P'| = 1 + t^2")
 ph = BezierCurve([[0, 0], ["1/3", 0], ["2/3", "1/3"], ["2/3", 1]])
 print("  sigma =", fmt(pythagorean_hodograph(ph)), "(power coefficients)")
+tex("sigma (power coefficients)", list(pythagorean_hodograph(ph)), echo=False)
 off = offset_curve(ph, Fraction(1, 4))
 print("  offset rho = 1/4: rational Bezier curve of degree", off.degree)
 print("  weights:", fmt(off.weights))
+tex("offset control points", [list(q) for q in off.control_points], echo=False)
+tex("offset weights", list(off.weights), echo=False)
 print("  (8.3) Omega(-1/4, Omega(1/4, P))(1/3) =", offset_point(off, Fraction(-1, 4), Fraction(1, 3)), "= P(1/3) =", ph.evaluate(Fraction(1, 3)))
+tex("(8.3) Omega(-1/4, Omega(1/4, P))(1/3)", offset_point(off, Fraction(-1, 4), Fraction(1, 3)), echo=False)
 
 step("the parabola: a rational offset of degree 6 (the notes say 8: true only as an elevated form)")
 parabola = BezierCurve([[0, 0], [3, 4], [7, 1]])
 par_off = parabola_offset(parabola, 1)
 print("  parabola (0,0),(3,4),(7,1): offset rho = 1 has degree", par_off.degree, "weights", fmt(par_off.weights))
+tex("parabola offset weights", list(par_off.weights), echo=False)
 
 step("cusps: radius of curvature = |rho| on the concave side (Figure 8.2)")
 vertex = BezierCurve([[-1, 1], [0, -1], [1, 1]])
 for rho in (-4, 4, Fraction(-1, 4)):
     print(f"  rho = {rho}: cusps at", [str(t) for t in offset_cusps(vertex, rho)])
+    tex(f"cusps for rho = {rho}", list(offset_cusps(vertex, rho)), echo=False)
 
 fig, axes = plt.subplots(1, 3, figsize=(15, 5))
 ts = np.linspace(0, 1, 400)
