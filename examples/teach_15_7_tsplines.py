@@ -9,7 +9,7 @@ Run:  python examples/teach_15_7_tsplines.py
 
 from __future__ import annotations
 
-from _teach import fmt, out_path, plt, step
+from _teach import fmt, out_path, plt, step, tex
 from gmpy2 import mpq
 
 from exactcagd.toolbox import bspline_extras as bx
@@ -39,19 +39,26 @@ def main():
     f333 = (f233 + f334) / 2
     for name, val in (("f(1,2,3)", f123), ("f(2,3,4)", f234), ("f(2,3,3)", f233), ("f(3,3,4)", f334), ("f(3,3,3)", f333)):
         print(f"  {name} = {fmt(val)}")
+        tex(name, val, echo=False)
     print("  check: basis_function([0,1,2,4,5], 3) =", fmt(bx.basis_function([0, 1, 2, 4, 5], 3)))
     print("  N[0,1,3,5,6](4) =", fmt(bx.basis_function([0, 1, 3, 5, 6], 4)), " so B = 11/24 * 23/60 =", fmt(mpq(11, 24) * mpq(23, 60)))
+    tex("N[0,1,3,5,6](4)", bx.basis_function([0, 1, 3, 5, 6], 4), echo=False)
+    tex("B = N[0,1,2,4,5](3) N[0,1,3,5,6](4)", mpq(11, 24) * mpq(23, 60), echo=False)
     print("  (the notes print the s-vector of B_10 as [0,1,2,5,7]; N[0,1,2,5,7](3) =",
           fmt(bx.basis_function([0, 1, 2, 5, 7], 3)), "- see the erratum)")
+    tex("N[0,1,2,5,7](3)", bx.basis_function([0, 1, 2, 5, 7], 3), echo=False)
 
     step("15.7.3 Refinement (15.16): insert k = 3 into [0,1,2,4,5]")
     for c, ks in bx.refine_basis_function([0, 1, 2, 4, 5], 3):
         print(f"  {fmt(c)} * N{fmt(tuple(ks))}")
+        tex(f"coefficient of N{fmt(tuple(ks))}", c, echo=False)
 
     step("15.7.1 Rule 1 on a T-mesh and 15.7.5 local refinement")
     m = t_mesh()
     s_vec, t_vec = m.knot_vectors((2, 3))
     print("  control point at the T-junction (2,3): s-knots", fmt(s_vec), " t-knots", fmt(t_vec))
+    tex("s-knots at (2,3)", list(s_vec), echo=False)
+    tex("t-knots at (2,3)", list(t_vec), echo=False)
     print("  classification:", m.classify())
     r = m.refine([(3, 2)])
     added = sorted(set(r.points) - set(m.points))
@@ -59,11 +66,14 @@ def main():
     print("  new weights:", {k: fmt(v) for k, v in r.weights.items() if v != 1}, " classification:", r.classify())
     for s, t in (("5/2", "5/2"), ("3", "7/2")):
         print(f"  P({s},{t}) before = {fmt(m.evaluate(s, t))}  after = {fmt(r.evaluate(s, t))}")
+        tex(f"P({s},{t}) after refinement", list(r.evaluate(s, t)), echo=False)
 
     step("15.7.6 Conversion into a tensor-product B-spline (M_{1,n} of (15.19)-(15.23))")
     tp = m.to_bspline()
     S, T = tp.S, tp.T
     print("  global knots s:", fmt(S), " t:", fmt(T))
+    tex("global knots s", list(S), echo=False)
+    tex("global knots t", list(T), echo=False)
     print("  same point at (5/2, 5/2):", tp.evaluate("5/2", "5/2") == m.evaluate("5/2", "5/2"))
 
     fig, ax = plt.subplots(figsize=(5.5, 4.5))
