@@ -213,14 +213,24 @@ def test_bezier_extraction_of_degree_zero_splines():
     assert [int(c[0][0]) for _, c in pieces] == [1, 2, 4]
 
 
+def _left_limit(basis, x, end, knots, degree):
+    """Limit from the left at ``end`` of a piecewise polynomial of degree ``degree``: exact
+    interpolation of ``degree + 1`` points inside the last non-empty span (sympy.limit on a
+    Piecewise fails on the sympy 1.10 floor)."""
+    end = sympy.Rational(end)
+    last = max(sympy.Rational(k) for k in knots if sympy.Rational(k) < end)
+    inner = [last + (end - last) * sympy.Rational(j, degree + 2) for j in range(1, degree + 2)]
+    return sympy.interpolate([(t, basis.subs(x, t)) for t in inner], x).subs(x, end)
+
+
 def _cox_de_boor_surface(net, knots_u, knots_v, p, q, weights, u, v):
     """Independent reference: sympy.bspline_basis_set in u and v, tensor product, projected.
     At the right domain end the last non-empty basis functions are taken as the limit from the left."""
     x, y = sympy.symbols("x y")
     bu = sympy.bspline_basis_set(p, [sympy.Rational(k) for k in knots_u], x)
     bv = sympy.bspline_basis_set(q, [sympy.Rational(k) for k in knots_v], y)
-    at_u = [sympy.limit(b, x, u, "-") if u == knots_u[-1] else b.subs(x, u) for b in bu]
-    at_v = [sympy.limit(b, y, v, "-") if v == knots_v[-1] else b.subs(y, v) for b in bv]
+    at_u = [_left_limit(b, x, u, knots_u, p) if u == knots_u[-1] else b.subs(x, u) for b in bu]
+    at_v = [_left_limit(b, y, v, knots_v, q) if v == knots_v[-1] else b.subs(y, v) for b in bv]
     dim = len(net[0][0])
     hom = [0] * (dim + 1)
     for i, row in enumerate(net):
