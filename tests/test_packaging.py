@@ -91,7 +91,8 @@ def test_gmpy2_float_of_mpq_is_correctly_rounded():
 
 def test_matplotlib_is_an_extra_and_license_ships():
     assert not any(d.startswith("matplotlib") for d in PYPROJECT["project"]["dependencies"])
-    assert any(d.startswith("matplotlib") for d in PYPROJECT["project"]["optional-dependencies"]["test"])
+    assert any(d.startswith("matplotlib") for d in PYPROJECT["project"]["optional-dependencies"]["test-core"])
+    assert "exactcagd[test-core]" in PYPROJECT["project"]["optional-dependencies"]["test"]
     assert "MIT License" in (ROOT / "LICENSE").read_text()
     assert (ROOT / "exactcagd" / "py.typed").is_file()
     assert "py.typed" in PYPROJECT["tool"]["setuptools"]["package-data"]["exactcagd"]
