@@ -30,7 +30,7 @@ import flint
 import gmpy2
 from gmpy2 import mpq, mpz
 
-from .. import _sympy_bridge, limits
+from .. import limits
 from ..errors import InexactInputError, InputError, LimitError
 
 __all__ = [
@@ -472,7 +472,3 @@ def to_float(x: Rational) -> float:
         return num / den
     except OverflowError:
         return math.inf if num > 0 else -math.inf
-
-
-# ----------------------------------------------------------------------------- sympy bridge
-_sympy_bridge.install()  # mpq stays exact inside sympy (also done by ``import exactcagd``)

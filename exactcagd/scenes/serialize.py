@@ -10,7 +10,6 @@ defining polynomial and isolating interval, and correctly rounded float64 compan
 from __future__ import annotations
 
 import dataclasses
-import json
 from pathlib import Path
 
 import numpy as np
@@ -21,7 +20,7 @@ from ..exact.scalars import Rational, rational_str, to_float
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bezier_surface import BezierSurface
 
-__all__ = ["to_json_value", "atomic_write_text", "atomic_write_bytes", "dumps"]
+__all__ = ["to_json_value", "atomic_write_text", "atomic_write_bytes"]
 
 
 def _floats(nested):
@@ -98,10 +97,6 @@ def _piece_companions(obj, data: dict) -> None:
         if isinstance(item, dict) and isinstance(item.get("parameter"), dict):
             value = joint.parameter
             item["parameter"]["float"] = to_float(value) if isinstance(value, Rational) else float(value)
-
-
-def dumps(obj) -> str:
-    return json.dumps(to_json_value(obj), indent=1, allow_nan=False)
 
 
 def atomic_write_bytes(path: Path, data: bytes) -> None:
