@@ -76,58 +76,58 @@ def parameter_domain(obj) -> tuple[float, float]:
     return float(obj.domain[0]), float(obj.domain[1])
 
 
-def sample_curve(curve, ts: np.ndarray) -> np.ndarray:
-    """Points of a Bézier or B-spline (NURBS) curve at float parameters, shape (len(ts), d)."""
-    knots, p, pts, w = _curve_data(curve)
+def _curve_points(data, ts: np.ndarray) -> np.ndarray:
+    """Points at ``ts`` of a curve given by its float data (:func:`_curve_data`)."""
+    knots, p, pts, w = data
     B = basis_matrix(knots, p, ts) * w[None, :]
     return (B @ pts) / B.sum(axis=1)[:, None]
 
 
+def sample_curve(curve, ts: np.ndarray) -> np.ndarray:
+    """Points of a Bézier or B-spline (NURBS) curve at float parameters, shape (len(ts), d)."""
+    return _curve_points(_curve_data(curve), ts)
+
+
 def _surface_data(surface):
+    """Knots, degrees and the homogeneous float net ``[w P, w]`` of a surface."""
     if isinstance(surface, BezierSurface):
         l, m = surface.degree
-        return _bezier_knots(l), _bezier_knots(m), (l, m), _float_array(surface.net_array()), _float_array(surface.weights_array())
-    net = _float_array(surface.control_net)
-    w = _float_array(surface.weights) if surface.is_rational else np.ones(net.shape[:2])
-    return surface.knots_u, surface.knots_v, surface.degree, net, w
+        ku, kv, degree = _bezier_knots(l), _bezier_knots(m), (l, m)
+        net, w = _float_array(surface.net_array()), _float_array(surface.weights_array())
+    else:
+        ku, kv, degree = surface.knots_u, surface.knots_v, surface.degree
+        net = _float_array(surface.control_net)
+        w = _float_array(surface.weights) if surface.is_rational else np.ones(net.shape[:2])
+    return ku, kv, degree, np.concatenate([net * w[..., None], w[..., None]], axis=-1)
 
 
 def sample_surface(surface, us: np.ndarray, vs: np.ndarray) -> np.ndarray:
     """Grid of points ``S(us[i], vs[j])``, shape (len(us), len(vs), d)."""
-    ku, kv, (p, q), net, w = _surface_data(surface)
-    Bu, Bv = basis_matrix(ku, p, us), basis_matrix(kv, q, vs)
-    hom = np.concatenate([net * w[..., None], w[..., None]], axis=-1)
-    values = np.einsum("ai,ijk,bj->abk", Bu, hom, Bv)
+    ku, kv, (p, q), hom = _surface_data(surface)
+    values = np.einsum("ai,ijk,bj->abk", basis_matrix(ku, p, us), hom, basis_matrix(kv, q, vs))
     return values[..., :-1] / values[..., -1:]
+
+
+def _surface_points(data, uv: np.ndarray) -> np.ndarray:
+    """Points ``S(u_k, v_k)`` of a surface given by its float data (:func:`_surface_data`)."""
+    ku, kv, (p, q), hom = data
+    values = np.einsum("ai,ijk,aj->ak", basis_matrix(ku, p, uv[:, 0]), hom, basis_matrix(kv, q, uv[:, 1]))
+    return values[:, :-1] / values[:, -1:]
 
 
 def sample_points_on_surface(surface, uv: np.ndarray) -> np.ndarray:
     """Points ``S(u_k, v_k)`` for parameter pairs ``uv`` of shape (k, 2)."""
-    ku, kv, (p, q), net, w = _surface_data(surface)
-    Bu, Bv = basis_matrix(ku, p, uv[:, 0]), basis_matrix(kv, q, uv[:, 1])
-    hom = np.concatenate([net * w[..., None], w[..., None]], axis=-1)
-    values = np.einsum("ai,ijk,aj->ak", Bu, hom, Bv)
-    return values[:, :-1] / values[:, -1:]
+    return _surface_points(_surface_data(surface), uv)
 
 
 def curve_on_surface_evaluator(surface, curve):
     """A function ``ts -> S(D(ts))`` (float points, shape (len(ts), d)) whose control data
     are converted to floats once, for callers that evaluate many times."""
-    curve_knots, p, curve_points, curve_weights = _curve_data(curve)
-    ku, kv, (l, m), net, w = _surface_data(surface)
-    hom = np.concatenate([net * w[..., None], w[..., None]], axis=-1)
-
-    def image(ts: np.ndarray) -> np.ndarray:
-        B = basis_matrix(curve_knots, p, ts) * curve_weights[None, :]
-        uv = (B @ curve_points) / B.sum(axis=1)[:, None]
-        values = np.einsum("ai,ijk,aj->ak", basis_matrix(ku, l, uv[:, 0]), hom, basis_matrix(kv, m, uv[:, 1]))
-        return values[:, :-1] / values[:, -1:]
-
-    return image
+    curve_data, surface_data = _curve_data(curve), _surface_data(surface)
+    return lambda ts: _surface_points(surface_data, _curve_points(curve_data, ts))
 
 
 def sample_curve_on_surface(surface, curve, samples: int = 400) -> np.ndarray:
     """Float points of ``F(K(t))`` at ``samples`` parameters (no composition needed)."""
     lo, hi = parameter_domain(curve)
-    uv = sample_curve(curve, np.linspace(lo, hi, samples))
-    return sample_points_on_surface(surface, uv)
+    return curve_on_surface_evaluator(surface, curve)(np.linspace(lo, hi, samples))
