@@ -132,7 +132,9 @@ def main() -> None:
         "argument (width 1e-8), written as the same Python loop `h = h * x + c` for each tool except `arb_poly` "
         "(one call into Arb). `FloatInterval` (binary64 endpoints, directed roundings) and `Interval` (exact mpq "
         "endpoints) are exactcagd's; `arb` is python-flint's ball at 53 bits (midpoint-radius, so its enclosure is "
-        "not the same set); `mpmath.iv` is mpmath's interval type. Ratio: time / python-flint `arb` loop time, same run.\n\n"
+        "not the same set); `mpmath.iv` is mpmath's interval type. The 'floor' row is what any interval type "
+        "written in Python pays before rounding anything: a class of two float slots whose `*` and `+` only build a "
+        "new object. Ratio: time / python-flint `arb` loop time, same run.\n\n"
         + markdown_table(["tool", "time per evaluation: median (min-max)", "ratio to arb loop (min times)", "result width",
                           "peak traced memory"], interval_rows)
         + "\n"
@@ -158,7 +160,22 @@ def bench_interval_horner(repeat: int, budget: float) -> list:
             h = h * x + c
         return h
 
+    class TwoFloats:
+        """The floor of any interval type written in Python: two float slots, no rounding, no checks."""
+
+        __slots__ = ("lo", "hi")
+
+        def __init__(self, lo, hi):
+            self.lo, self.hi = lo, hi
+
+        def __mul__(self, other):
+            return TwoFloats(self.lo * other.lo, self.hi * other.hi)
+
+        def __add__(self, other):
+            return TwoFloats(self.lo + other.lo, self.hi + other.hi)
+
     fi = [FloatInterval(a, a + 1e-12) for a in lows]
+    tf = [TwoFloats(a, a + 1e-12) for a in lows]
     ei = [Interval(a, a + 1e-12) for a in lows]
     ab = [flint.arb(a + 0.5e-12, 0.5e-12) for a in lows]
     iv = [mpmath.iv.mpf([a, a + 1e-12]) for a in lows]
@@ -168,6 +185,8 @@ def bench_interval_horner(repeat: int, budget: float) -> list:
         ("python-flint arb (Python loop)", lambda: horner(ab, ax), lambda r: float(2 * r.rad())),
         ("python-flint arb_poly (one call)", lambda: poly(ax), lambda r: float(2 * r.rad())),
         ("exactcagd FloatInterval", lambda: horner(fi, fx), lambda r: r.hi - r.lo),
+        ("floor: a Python class of two floats, no rounding (not an enclosure)", lambda: horner(tf, TwoFloats(x_lo, x_hi)),
+         lambda r: r.hi - r.lo),
         ("exactcagd Interval (exact mpq)", lambda: horner(ei, ex), lambda r: float(r.hi - r.lo)),
         ("mpmath.iv", lambda: horner(iv, ix), lambda r: float(r.delta)),
     ]
