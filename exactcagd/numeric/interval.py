@@ -296,26 +296,71 @@ def _two_product_error(a: float, b: float, p: float) -> float:
     return ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
-def _add_both(a: float, b: float) -> tuple[float, float]:
-    """``(round_down(a + b), round_up(a + b))``."""
+def _add_down(a: float, b: float) -> float:
+    """``round_down(a + b)``."""
     s = a + b
     if -_SAFE_HI < s < _SAFE_HI and -_SAFE_HI < a < _SAFE_HI and -_SAFE_HI < b < _SAFE_HI:
-        if s == 0.0 and not (a == 0.0 and b == 0.0 and math.copysign(1.0, a) == math.copysign(1.0, b)):
-            return -0.0, 0.0  # an exact zero sum is -0 rounding down, +0 rounding up (IEEE 754 6.3)
+        if s == 0.0:
+            # an exact zero sum is -0 rounding down unless both terms are +0 (IEEE 754 6.3)
+            return 0.0 if (a == 0.0 and b == 0.0 and math.copysign(1.0, a) > 0 and math.copysign(1.0, b) > 0) else -0.0
         bb = s - a
-        return _directed(s, (a - (s - bb)) + (b - bb))
-    return _rd("add", a, b), _ru("add", a, b)
+        return s if (a - (s - bb)) + (b - bb) >= 0 else math.nextafter(s, -math.inf)
+    return _rd("add", a, b)
 
 
-def _mul_both(a: float, b: float) -> tuple[float, float]:
-    """``(round_down(a b), round_up(a b))``."""
+def _add_up(a: float, b: float) -> float:
+    """``round_up(a + b)``."""
+    s = a + b
+    if -_SAFE_HI < s < _SAFE_HI and -_SAFE_HI < a < _SAFE_HI and -_SAFE_HI < b < _SAFE_HI:
+        if s == 0.0:
+            # an exact zero sum is +0 rounding up unless both terms are -0 (IEEE 754 6.3)
+            return -0.0 if (a == 0.0 and b == 0.0 and math.copysign(1.0, a) < 0 and math.copysign(1.0, b) < 0) else 0.0
+        bb = s - a
+        return s if (a - (s - bb)) + (b - bb) <= 0 else math.nextafter(s, math.inf)
+    return _ru("add", a, b)
+
+
+def _mul_down(a: float, b: float) -> float:
+    """``round_down(a b)`` (NaN for ``0 * inf``)."""
     p = a * b
     if a == 0.0 or b == 0.0:
-        if math.isfinite(a) and math.isfinite(b):
-            return p, p  # an exact zero (its sign does not matter for an endpoint)
-    elif _SAFE_LO < abs(p) < _SAFE_HI and abs(a) < _SAFE_HI and abs(b) < _SAFE_HI:
-        return _directed(p, _two_product_error(a, b, p))
-    return _rd("mul", a, b), _ru("mul", a, b)
+        return p if math.isfinite(a) and math.isfinite(b) else _rd("mul", a, b)
+    if _SAFE_LO < abs(p) < _SAFE_HI and abs(a) < _SAFE_HI and abs(b) < _SAFE_HI:
+        return p if _two_product_error(a, b, p) >= 0 else math.nextafter(p, -math.inf)
+    return _rd("mul", a, b)
+
+
+def _mul_up(a: float, b: float) -> float:
+    """``round_up(a b)`` (NaN for ``0 * inf``)."""
+    p = a * b
+    if a == 0.0 or b == 0.0:
+        return p if math.isfinite(a) and math.isfinite(b) else _ru("mul", a, b)
+    if _SAFE_LO < abs(p) < _SAFE_HI and abs(a) < _SAFE_HI and abs(b) < _SAFE_HI:
+        return p if _two_product_error(a, b, p) <= 0 else math.nextafter(p, math.inf)
+    return _ru("mul", a, b)
+
+
+def _interval_product(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
+    """Endpoints of ``[al, ah] [bl, bh]`` by the signs of the endpoints (Moore, *Interval
+    Analysis* (1966), the nine cases): two directed products except when both factors
+    contain 0; the same bits as the minimum and maximum of the four directed corner products."""
+    if al >= 0:
+        if bl >= 0:
+            return _mul_down(al, bl), _mul_up(ah, bh)
+        if bh <= 0:
+            return _mul_down(ah, bl), _mul_up(al, bh)
+        return _mul_down(ah, bl), _mul_up(ah, bh)
+    if ah <= 0:
+        if bl >= 0:
+            return _mul_down(al, bh), _mul_up(ah, bl)
+        if bh <= 0:
+            return _mul_down(ah, bh), _mul_up(al, bl)
+        return _mul_down(al, bh), _mul_up(al, bl)
+    if bl >= 0:
+        return _mul_down(al, bh), _mul_up(ah, bh)
+    if bh <= 0:
+        return _mul_down(ah, bl), _mul_up(al, bl)
+    return min(_mul_down(al, bh), _mul_down(ah, bl)), max(_mul_up(al, bl), _mul_up(ah, bh))
 
 
 def _div_both(a: float, b: float) -> tuple[float, float]:
@@ -424,7 +469,7 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        return FloatInterval._make(_add_both(self._lo, o._lo)[0], _add_both(self._hi, o._hi)[1])
+        return FloatInterval._make(_add_down(self._lo, o._lo), _add_up(self._hi, o._hi))
 
     __radd__ = __add__
 
@@ -432,7 +477,7 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        return FloatInterval._make(_add_both(self._lo, -o._hi)[0], _add_both(self._hi, -o._lo)[1])
+        return FloatInterval._make(_add_down(self._lo, -o._hi), _add_up(self._hi, -o._lo))
 
     def __rsub__(self, other):
         o = _float_operand(other)
@@ -442,11 +487,10 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        both = [_mul_both(a, b) for a in {self._lo, self._hi} for b in {o._lo, o._hi}]
-        lows, highs = [x for x, _ in both], [y for _, y in both]
-        if any(math.isnan(x) for x in lows + highs):  # 0 * inf: the set product is unbounded
+        lo, hi = _interval_product(self._lo, self._hi, o._lo, o._hi)
+        if lo != lo or hi != hi:  # NaN from 0 * inf: the set product is unbounded
             return FloatInterval._make(-math.inf, math.inf)
-        return FloatInterval._make(min(lows), max(highs))
+        return FloatInterval._make(lo, hi)
 
     __rmul__ = __mul__
 
@@ -508,6 +552,8 @@ def _exact_le(a, b, upper: bool = False) -> bool:
 
 
 def _float_operand(x) -> "FloatInterval | None":
+    if type(x) is FloatInterval:  # the common case first: no call, no try
+        return x
     try:
         return _as_float_interval(x)
     except InputError:
