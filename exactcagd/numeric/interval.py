@@ -320,24 +320,26 @@ def _add_up(a: float, b: float) -> float:
     return _ru("add", a, b)
 
 
-def _mul_down(a: float, b: float) -> float:
-    """``round_down(a b)`` (NaN for ``0 * inf``)."""
+def _mul_directed(a: float, b: float, upward: bool) -> float:
+    """``round_up(a b)`` if ``upward`` else ``round_down(a b)`` (NaN for ``0 * inf``)."""
     p = a * b
     if a == 0.0 or b == 0.0:
-        return p if math.isfinite(a) and math.isfinite(b) else _rd("mul", a, b)
-    if _SAFE_LO < abs(p) < _SAFE_HI and abs(a) < _SAFE_HI and abs(b) < _SAFE_HI:
-        return p if _two_product_error(a, b, p) >= 0 else math.nextafter(p, -math.inf)
-    return _rd("mul", a, b)
+        if math.isfinite(a) and math.isfinite(b):
+            return p  # an exact zero
+    elif _SAFE_LO < abs(p) < _SAFE_HI and abs(a) < _SAFE_HI and abs(b) < _SAFE_HI:
+        error = _two_product_error(a, b, p)  # a b = p + error exactly
+        if upward:
+            return p if error <= 0 else math.nextafter(p, math.inf)
+        return p if error >= 0 else math.nextafter(p, -math.inf)
+    return _ru("mul", a, b) if upward else _rd("mul", a, b)
+
+
+def _mul_down(a: float, b: float) -> float:
+    return _mul_directed(a, b, False)
 
 
 def _mul_up(a: float, b: float) -> float:
-    """``round_up(a b)`` (NaN for ``0 * inf``)."""
-    p = a * b
-    if a == 0.0 or b == 0.0:
-        return p if math.isfinite(a) and math.isfinite(b) else _ru("mul", a, b)
-    if _SAFE_LO < abs(p) < _SAFE_HI and abs(a) < _SAFE_HI and abs(b) < _SAFE_HI:
-        return p if _two_product_error(a, b, p) <= 0 else math.nextafter(p, math.inf)
-    return _ru("mul", a, b)
+    return _mul_directed(a, b, True)
 
 
 def _interval_product(al: float, ah: float, bl: float, bh: float) -> tuple[float, float]:
