@@ -407,3 +407,45 @@ def test_default_refuses_parameters_outside_unit_interval():
         with pytest.raises(DomainError):
             evaluate_surface(BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]), bad, [0.5] * len(bad))
     assert np.isfinite(evaluate(curve, [2.0], method="horner")[1]).all()
+
+
+def test_default_kernel_bit_identical_on_hard_inputs(monkeypatch):
+    """issue 18: the kernel's blocks (first pass of 1-4 Horner steps, then 4 per pass) and
+    its in-block division by the weight against the numpy path, on inputs that reach every
+    branch: degrees 0-13, block boundaries and a tail block, subnormal parameters (the
+    tiny-ratio term), overflow and a weight enclosure containing 0 (infinite radii), weights
+    over 32 orders of magnitude; certified against exact evaluation at the special
+    parameters."""
+    import exactcagd.numeric.evaluation as module
+    from exactcagd.numeric import _horner_kernel
+
+    if not _horner_kernel.AVAILABLE:
+        pytest.skip("numba not installed: the default runs the numpy path itself")
+    monkeypatch.setattr(module, "KERNEL_MIN_POINTS", 0)
+    rng = np.random.default_rng(23)
+    special = [0.0, 5e-324, 2.0**-1060, 2.0**-1030, 1e-300, 2.0**-53, 0.25, 0.5, np.nextafter(0.5, 1.0),
+               1 - 2.0**-53, 1.0]
+    hard = [
+        BezierCurve([[q(1e-310)], [q(-3e-315)], [q(5e-324)], [mpq(1, 10**320)], [mpq(-7, 10**312)]]),
+        BezierCurve([[q(1e308)], [q(-1.7e308)], [q(1e308)]]),  # 2 * 1.7e308 overflows
+        BezierCurve.from_homogeneous(np.array([[mpq(1), mpq(1)], [mpq(-1), mpq(-1)]], dtype=object)),
+        BezierCurve([[1, -2, 3], ["1/3", 5, -7], [2, "-1/7", 0], [-4, 1, 1]],
+                    weights=[mpq(1, 10**16), 10**16, mpq(3, 10**16), 7]),
+    ]
+    hard += [_moderate_curve(rng, n, d=3) for n in (0, 1, 2, 3, 4, 5, 8, 9, 13)]
+    hard += [BezierCurve(_moderate_curve(rng, n, d=2).control_points, weights=[int(w) for w in rng.integers(1, 50, n + 1)])
+             for n in (1, 4, 6, 11)]
+    block = _horner_kernel.BLOCK
+    for curve in hard:
+        for size in (block - 1, block + 1, 2 * block + 37):
+            ts = np.concatenate([special, rng.random(size - len(special))])
+            values, radii = evaluate(curve, ts)
+            ref_values, ref_radii = _numpy_fallback(monkeypatch, curve, ts)
+            assert np.array_equal(values, ref_values, equal_nan=True)
+            assert np.array_equal(radii, ref_radii)
+            assert np.array_equal(evaluate(curve, ts, bound=False), ref_values, equal_nan=True)
+        keep = [i for i, t in enumerate(special) if not (curve is hard[2] and t == 0.5)]  # W(1/2) = 0 there
+        exact = [exact_point(curve.control_points, curve.weights, q(special[i])) for i in keep]
+        check_bounds(exact, values[keep], radii[keep])
+    assert np.isinf(evaluate(hard[1], special)[1]).any()  # overflow
+    assert np.isinf(evaluate(hard[2], special)[1][7]).all() and np.isfinite(evaluate(hard[2], special)[1][:6]).all()

@@ -1,12 +1,22 @@
 """Compiled kernel of Bernstein-Horner evaluation with its certified radius (optional numba).
 
-Blocks of parameters go through, one coefficient at a time, what the numpy path of
-:class:`exactcagd.numeric.evaluation._HornerBernstein` does with whole arrays: the same
-float operations in the same order (notes 3.2, Horner's rule in Bernstein form; the
-radius of :mod:`exactcagd.numeric.evaluation`, notes 13 (13.4)-(13.8)), so the values and
-radii are bit-for-bit those of the numpy path (tested).  Fusing the value pass, the pass
-on ``|c|`` and the radius formula into one loop removes the temporary arrays that make
-the numpy path several times slower than a compiled evaluator.
+Blocks of parameters go through what the numpy path of
+:class:`exactcagd.numeric.evaluation._HornerBernstein` (and, for rational curves,
+:func:`exactcagd.numeric.evaluation._project`) does with whole arrays: the same float
+operations in the same order (notes 3.2, Horner's rule in Bernstein form; the radius of
+:mod:`exactcagd.numeric.evaluation`, notes 13 (13.4)-(13.8)), so the values and radii are
+bit-for-bit those of the numpy path (tested).  What makes it faster is only where the
+intermediate results live:
+
+* every per-parameter quantity (ratio, scale, running sums, radius) stays in a work
+  array of :data:`BLOCK` parameters (in L1 cache), and every inner loop runs over the
+  block's parameters without branches, so the compiler vectorizes it;
+* Horner's steps are sequential, so one pass over the block takes up to 4 of them, on
+  the values and on ``|c|`` (the radius' ``S^``) together: the running sums stay in
+  registers between the steps instead of going to memory after each one;
+* a rational curve's weight is evaluated first in each block and every coordinate is
+  divided by it (with the radius of the quotient) while still in the block: the
+  homogeneous values never go to a ``(P, D + 1)`` array.
 
 numba compiles with ``fastmath=False``: no reassociation and no contraction of ``a * b + c``
 into a fused multiply-add, so every operation is one correctly rounded binary64 operation
@@ -26,7 +36,7 @@ import os
 
 import numpy as np
 
-__all__ = ["AVAILABLE", "horner_curve", "project"]
+__all__ = ["AVAILABLE", "horner_curve"]
 
 #: numba installed (and not switched off by ``EXACTCAGD_NO_NUMBA``); it is imported, and the
 #: kernels compiled (or loaded from numba's cache), at their first call, not at import time
@@ -39,162 +49,193 @@ AVAILABLE = not os.environ.get("EXACTCAGD_NO_NUMBA") and importlib.util.find_spe
 BLOCK = 512
 
 
-def _horner_curve(c, c_abs_sum, t, g, eta, min_normal, values, radii, bound):
-    """Values (and radii) of ``sum_k c_k B_k`` at every ``t``; ``c`` is ``(n + 1, D)``.
+def _up(x):
+    """``nextafter(x + 0.0, inf)`` for ``x >= 0`` (or ``nan``): the bit increment of
+    :func:`exactcagd.numeric.fp_error.up_nonnegative`, on one float."""
+    return np.int64(np.float64(x + 0.0).view(np.int64) + 1).view(np.float64)
 
-    ``c`` holds the binomial-scaled coefficients ``C(n, k) b_k``, ``c_abs_sum[j]`` the sum
-    of ``|c_k,j|`` over ``k`` (numpy's ``np.sum``); ``g = gamma_over(6n + 1)`` and
-    ``eta = 2^-1074`` as in the numpy path.  ``t <= 1/2``: ``(1-t)^n sum_k c_k s^k``,
-    ``s = t/(1-t)``, Horner from ``c_n``; ``t > 1/2``: ``t^n sum_k c_k r^(n-k)``,
-    ``r = (1-t)/t``, Horner from ``c_0``.  Each upward rounding of the radius is the bit
-    increment of :func:`exactcagd.numeric.fp_error.up_nonnegative` (``x + 0.0`` first).
+
+def _down_positive(x):
+    """``nextafter(x, -inf)`` where ``x > 0`` (``+inf`` included: the bit decrement), ``-1``
+    elsewhere, where :func:`exactcagd.numeric.evaluation._project` never reads it."""
+    return np.int64(np.float64(x).view(np.int64) - 1).view(np.float64) if x > 0 else -1.0
+
+
+def _horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, values, radii, bound):
+    """Values (and radii) of the curve ``sum_k c_k B_k`` at every ``t`` into ``(P, d)`` arrays.
+
+    ``c`` is ``(n + 1, D)``: the binomial-scaled coefficients ``C(n, k) b_k``; for a
+    ``rational`` curve its last column is the weight and ``d = D - 1`` coordinates
+    ``X_j / W`` are stored, else ``d = D``.  ``c_abs_sum[j]`` is the sum of ``|c_k,j|``
+    over ``k`` (numpy's ``np.sum``); ``g = gamma_over(6n + 1)``, ``eta = 2^-1074``,
+    ``u_quotient >= u / (1 - u)`` as in the numpy path.  With ``bound`` false only
+    ``values`` is written (``radii`` may be any float array).
     """
     n = c.shape[0] - 1
-    dim = c.shape[1]
-    count = t.shape[0]
     a_factor = (2 * n + 2) * eta
     tiny_factor = 2 * n * eta
+    first_steps = (n - 1) % 4 + 1 if n >= 1 else 0  # steps of the first pass: 1..4
     x = np.empty(BLOCK)
-    x_abs = np.empty(BLOCK)
+    base = np.empty(BLOCK)
     scale = np.empty(BLOCK)
     a = np.empty(BLOCK)
+    a_j = np.empty(BLOCK)
     low = np.empty(BLOCK, dtype=np.bool_)
-    tiny = np.empty(BLOCK, dtype=np.bool_)
     h = np.empty(BLOCK)
-    h_abs = np.empty(BLOCK)
-    r = np.empty(BLOCK)
-    r_bits = r.view(np.int64)
+    e = np.empty(BLOCK)
+    w = np.empty(BLOCK)
+    e_w = np.empty(BLOCK)
+    w_low = np.empty(BLOCK)
+    count = t.shape[0]
+    dim = values.shape[1]
     for start in range(0, count, BLOCK):
         m = min(BLOCK, count - start)
+        any_tiny = False
         for i in range(m):
             tp = t[start + i]
             q = 1.0 - tp
             is_low = tp <= 0.5
-            base = q if is_low else tp
-            xi = (tp if is_low else q) / base
-            s = 1.0
-            if n >= 1:
-                s = base
-                for _ in range(n - 1):
-                    s = s * base
+            b = q if is_low else tp
+            xi = (tp if is_low else q) / b
             x[i] = xi
-            x_abs[i] = abs(xi)
-            scale[i] = s
+            base[i] = b
             low[i] = is_low
+            any_tiny |= xi != 0.0 and abs(xi) <= min_normal
+        for i in range(m):
+            scale[i] = base[i] if n >= 1 else 1.0
+        for _ in range(n - 1):  # (1-t)^n or t^n by n - 1 repeated products
+            for i in range(m):
+                scale[i] = scale[i] * base[i]
+        for i in range(m):
+            s = abs(scale[i])
             # a_factor is subnormal: multiplying it by 1.0 (every t in [0, 1]) gives it back
             # exactly, and skipping that product avoids the CPU's slow subnormal path
-            a[i] = a_factor if abs(s) <= 1.0 else a_factor * abs(s)
-            tiny[i] = xi != 0.0 and abs(xi) <= min_normal
-        for j in range(dim):
-            first_low, first_high = c[n, j], c[0, j]
-            for i in range(m):
-                h[i] = first_low if low[i] else first_high
-                h_abs[i] = abs(h[i])
-            for k in range(1, n + 1):
-                next_low, next_high = c[n - k, j], c[k, j]
+            a[i] = a_factor if s <= 1.0 else a_factor * s
+        if rational:
+            _coordinate(c, c_abs_sum, dim, n, first_steps, x, low, scale, a, a_j, any_tiny, tiny_factor, min_normal,
+                        g, bound, w, e_w, m)
+            if bound:
                 for i in range(m):
-                    coefficient = next_low if low[i] else next_high
-                    h[i] = h[i] * x[i] + coefficient
-                    h_abs[i] = h_abs[i] * x_abs[i] + abs(coefficient)
+                    w_low[i] = _down_positive(abs(w[i]) - e_w[i])
+        for j in range(dim):
+            _coordinate(c, c_abs_sum, j, n, first_steps, x, low, scale, a, a_j, any_tiny, tiny_factor, min_normal,
+                        g, bound, h, e, m)
+            if rational:
+                _divide(h, e, w, e_w, w_low, u_quotient, eta, bound, m)
             for i in range(m):
-                values[start + i, j] = h[i] * scale[i]
-            if not bound:
-                continue
-            tiny_j = c_abs_sum[j] * tiny_factor
-            for i in range(m):  # up(S^ + A)
-                r[i] = (h_abs[i] * scale[i] + (a[i] + tiny_j * abs(scale[i]) if tiny[i] else a[i])) + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):  # up(g * .)
-                r[i] = g * r[i] + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):  # up(. + A)
-                r[i] = r[i] + (a[i] + tiny_j * abs(scale[i]) if tiny[i] else a[i]) + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):
-                v = values[start + i, j]
-                radii[start + i, j] = r[i] if math.isfinite(v) and math.isfinite(r[i]) else np.inf
+                values[start + i, j] = h[i]
+            if bound:
+                for i in range(m):
+                    radii[start + i, j] = e[i]
 
 
-def _project(hom, rad, u_quotient, eta, values, radii):
-    """``values = X / W`` with certified radii from the homogeneous ``hom`` and ``rad``.
+def _coordinate(c, c_abs_sum, j, n, first_steps, x, low, scale, a, a_j, any_tiny, tiny_factor, min_normal, g, bound,
+                value, radius, m):
+    """Column ``j`` of ``c`` on the block: ``value = h * scale`` and (if ``bound``) its radius.
 
-    The operations of :func:`exactcagd.numeric.evaluation._project` in the same order, in
-    blocks of parameters with one pass per operation (``up`` is the bit increment after
-    ``+ 0.0``, ``down`` the bit decrement where its result is used)::
+    The first pass starts the recurrence and takes its first 1-4 steps, every further pass
+    4 steps (same operations as one step per pass).  ``radius`` is ``inf`` where the value
+    or the bound is not finite.
+    """
+    _first_pass(c, j, n, first_steps, x, low, value, radius, m)
+    for k in range(first_steps + 1, n + 1, 4):
+        _four_steps(c, j, n, k, x, low, value, radius, m)
+    if not bound:
+        for i in range(m):
+            value[i] = value[i] * scale[i]
+        return
+    for i in range(m):
+        a_j[i] = a[i]
+    if any_tiny:  # s^ subnormal: its absolute error moves p (module docstring of evaluation)
+        tiny_j = c_abs_sum[j] * tiny_factor
+        for i in range(m):
+            if x[i] != 0.0 and abs(x[i]) <= min_normal:
+                a_j[i] = a[i] + tiny_j * abs(scale[i])
+    for i in range(m):
+        v = value[i] * scale[i]
+        r = _up(g * _up(radius[i] * scale[i] + a_j[i]))  # up(g * up(S^ + A))
+        r = _up(r + a_j[i])  # up(. + A)
+        value[i] = v
+        radius[i] = r if math.isfinite(v) and math.isfinite(r) else np.inf
+
+
+def _step(v, u, xi, is_low, e, f):
+    """One Horner step on the value ``v`` and on ``|c|`` (``u``): ``v x + d, u x + |d|``,
+    ``d = e`` on the low half (``t <= 1/2``), ``f`` on the high half."""
+    d = e if is_low else f
+    return v * xi + d, u * xi + abs(d)
+
+
+def _first_pass(c, j, n, steps, x, low, h, h_abs, m):
+    """``h = c_first`` and the first ``steps`` (0-4) Horner steps, with the pass on ``|c|``."""
+    e0, f0 = c[n, j], c[0, j]  # e*: coefficients of the low half (t <= 1/2), f*: the high half
+    e1, f1 = c[max(n - 1, 0), j], c[min(1, n), j]
+    e2, f2 = c[max(n - 2, 0), j], c[min(2, n), j]
+    e3, f3 = c[max(n - 3, 0), j], c[min(3, n), j]
+    e4, f4 = c[max(n - 4, 0), j], c[min(4, n), j]
+    # the tests of steps are loop-invariant: the compiler unswitches them out of the loop
+    for i in range(m):
+        is_low = low[i]
+        xi = x[i]
+        v = e0 if is_low else f0
+        u = abs(v)
+        if steps >= 1:
+            v, u = _step(v, u, xi, is_low, e1, f1)
+        if steps >= 2:
+            v, u = _step(v, u, xi, is_low, e2, f2)
+        if steps >= 3:
+            v, u = _step(v, u, xi, is_low, e3, f3)
+        if steps >= 4:
+            v, u = _step(v, u, xi, is_low, e4, f4)
+        h[i] = v
+        h_abs[i] = u
+
+
+def _four_steps(c, j, n, k, x, low, h, h_abs, m):
+    """Horner steps ``k .. k + 3``: coefficients ``c_(n-k) ..`` (low half), ``c_k ..`` (high)."""
+    e1, f1 = c[n - k, j], c[k, j]
+    e2, f2 = c[n - k - 1, j], c[k + 1, j]
+    e3, f3 = c[n - k - 2, j], c[k + 2, j]
+    e4, f4 = c[n - k - 3, j], c[k + 3, j]
+    for i in range(m):
+        is_low = low[i]
+        xi = x[i]
+        v, u = _step(h[i], h_abs[i], xi, is_low, e1, f1)
+        v, u = _step(v, u, xi, is_low, e2, f2)
+        v, u = _step(v, u, xi, is_low, e3, f3)
+        h[i], h_abs[i] = _step(v, u, xi, is_low, e4, f4)
+
+
+def _divide(x, e_x, w, e_w, w_low, u_quotient, eta, bound, m):
+    """``x = x / w`` and ``e_x`` its certified radius, in place, as numpy's ``_project``::
 
         |X^/W^ - X/W| <= (e_X + (|X^| + e_X) e_W / (|W^| - e_W)) / |W^| + u |X^/W^| + eta
+
+    ``w_low = down(|W^| - e_W)`` (``<= 0``: the weight's enclosure may contain 0, radius
+    ``inf``); ``up`` is the bit increment after ``+ 0.0``.
     """
-    count, dim = values.shape
-    abs_w = np.empty(BLOCK)
-    err_w = np.empty(BLOCK)
-    low = np.empty(BLOCK)
-    low_bits = low.view(np.int64)
-    valid = np.empty(BLOCK, dtype=np.bool_)
-    q = np.empty(BLOCK)
-    r = np.empty(BLOCK)
-    r_bits = r.view(np.int64)
-    d = np.empty(BLOCK)
-    d_bits = d.view(np.int64)
-    for start in range(0, count, BLOCK):
-        m = min(BLOCK, count - start)
+    if not bound:
         for i in range(m):
-            abs_w[i] = abs(hom[start + i, dim])
-            err_w[i] = rad[start + i, dim]
-            low[i] = abs_w[i] - err_w[i]
-        for i in range(m):
-            # down(x) = nextafter(x, -inf) is only read where it is > 0, i.e. for x > 0
-            # (+inf included): there it is the bit decrement; elsewhere mark it invalid
-            if low[i] > 0:
-                low_bits[i] -= 1
-            else:
-                low[i] = -1.0
-        for i in range(m):
-            valid[i] = low[i] > 0
-        for j in range(dim):
-            for i in range(m):
-                x = hom[start + i, j]
-                q[i] = x / hom[start + i, dim]
-                values[start + i, j] = q[i]
-                r[i] = abs(x) + rad[start + i, j] + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):  # x_bound = up(up(|x| + e_x) e_w)
-                r[i] = r[i] * err_w[i] + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):
-                r[i] = r[i] / (low[i] if valid[i] else 1.0) + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):  # term = up(e_x + up(x_bound / low))
-                r[i] = rad[start + i, j] + r[i] + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):  # d = up(term / |w|)
-                r[i] = r[i] / (abs_w[i] if valid[i] else 1.0) + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):
-                d[i] = abs(q[i]) * u_quotient + 0.0
-            for i in range(m):
-                d_bits[i] += 1
-            for i in range(m):
-                d[i] = d[i] + eta + 0.0
-            for i in range(m):
-                d_bits[i] += 1
-            for i in range(m):
-                r[i] = r[i] + d[i] + 0.0
-            for i in range(m):
-                r_bits[i] += 1
-            for i in range(m):
-                ri = r[i] if valid[i] else np.inf
-                radii[start + i, j] = ri if math.isfinite(q[i]) and math.isfinite(ri) else np.inf
+            x[i] = x[i] / w[i]
+        return
+    for i in range(m):
+        xi = x[i]
+        ei = e_x[i]
+        valid = w_low[i] > 0
+        q = xi / w[i]
+        x_bound = _up(_up(abs(xi) + ei) * e_w[i])  # up(up(|x| + e_x) e_w)
+        term = _up(ei + _up(x_bound / (w_low[i] if valid else 1.0)))  # up(e_x + up(x_bound / low))
+        d = _up(term / (abs(w[i]) if valid else 1.0))  # up(term / |w|)
+        r = _up(d + _up(_up(abs(q) * u_quotient) + eta))
+        r = r if valid else np.inf
+        x[i] = q
+        e_x[i] = r if math.isfinite(q) and math.isfinite(r) else np.inf
 
 
 _COMPILED: dict = {}
+#: helpers of the kernel: compiled (inlined into it) before it and put in their place in
+#: this module's namespace, where numba resolves the kernel's calls
+_HELPERS = ("_up", "_down_positive", "_step", "_coordinate", "_first_pass", "_four_steps", "_divide")
 
 
 def _compiled(func):
@@ -203,16 +244,16 @@ def _compiled(func):
         import numba
 
         # error_model="numpy": a division by zero gives inf/nan as in numpy, never an exception
-        kernel = numba.njit(cache=True, nogil=True, fastmath=False, error_model="numpy")(func)
+        options = {"nogil": True, "fastmath": False, "error_model": "numpy"}
+        namespace = globals()
+        for name in _HELPERS:
+            if not isinstance(namespace[name], numba.core.dispatcher.Dispatcher):
+                namespace[name] = numba.njit(inline="always", **options)(namespace[name])
+        kernel = numba.njit(cache=True, **options)(func)
         _COMPILED[func.__name__] = kernel
     return kernel
 
 
-def horner_curve(c, c_abs_sum, t, g, eta, min_normal, values, radii, bound) -> None:
+def horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, values, radii, bound) -> None:
     """The compiled :func:`_horner_curve` (numba; compiled at the first call)."""
-    _compiled(_horner_curve)(c, c_abs_sum, t, g, eta, min_normal, values, radii, bound)
-
-
-def project(hom, rad, u_quotient, eta, values, radii) -> None:
-    """The compiled :func:`_project` (numba; compiled at the first call)."""
-    _compiled(_project)(hom, rad, u_quotient, eta, values, radii)
+    _compiled(_horner_curve)(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, values, radii, bound)

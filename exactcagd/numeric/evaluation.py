@@ -424,15 +424,19 @@ class _Default(_HornerBernstein):
     check = _DeCasteljau.check
 
     @classmethod
-    def curve(cls, c, c_abs, pair, t, values, radii) -> None:
-        if not _use_kernel(t.size):
-            super().curve(c, c_abs, pair, t, values, radii)
-            return
+    def compiled(cls, c: np.ndarray, c_abs: np.ndarray, t: np.ndarray, rational: bool, bound: bool):
+        """The whole evaluation by the kernel: values ``(P, d)`` (and radii), projected if ``rational``.
+
+        ``c`` and ``c_abs`` are the cached ``(n + 1, D)`` coefficients (``D = d + 1`` for a
+        rational curve: the weight last); the kernel divides by the weight block by block.
+        """
         n = c.shape[0] - 1
-        sums = np.ascontiguousarray(np.sum(c_abs, axis=0)[:, 0])
-        out = radii if radii is not None else values
-        _horner_kernel.horner_curve(np.ascontiguousarray(c[..., 0]), sums, t, gamma_over(cls.count(n, t)),
-                                    ETA, MIN_NORMAL, values, out, radii is not None)
+        dim = c.shape[1] - 1 if rational else c.shape[1]
+        # one allocation for both outputs (see evaluate)
+        values, radii = np.empty((2, t.size, dim)) if bound else (np.empty((t.size, dim)),) * 2
+        _horner_kernel.horner_curve(c, np.sum(c_abs, axis=0), t, gamma_over(cls.count(n, t)), ETA, MIN_NORMAL,
+                                    _U_QUOTIENT, rational, values, radii, bound)
+        return (values, radii) if bound else values
 
 
 class _PowerHorner:
@@ -666,6 +670,9 @@ def evaluate(curve, ts, method: str = "auto", bound: bool = True):
     m = _method(method)
     t = _parameters(ts, "ts")
     m.check(t, "ts")
+    if m is _Default and _use_kernel(t.size):
+        c, c_abs, _ = _curve_coefficients(curve, m.name)
+        return _Default.compiled(c, c_abs, np.ascontiguousarray(t), curve.is_rational, bound)
     c, c_abs, pair = (a[..., None] for a in _curve_coefficients(curve, m.name))
     dim = c.shape[1]
     # one allocation for both outputs: two fresh arrays of this size each cost their page
@@ -675,12 +682,7 @@ def evaluate(curve, ts, method: str = "auto", bound: bool = True):
         with np.errstate(all="ignore"):  # overflow shows up as an infinite radius
             m.curve(c, c_abs, pair, t[sl], values[sl], radii[sl] if bound else None)
     if curve.is_rational:
-        if bound and m is _Default and _use_kernel(t.size):
-            hom, hom_radii = values, radii
-            values, radii = np.empty((2, t.size, dim - 1))
-            _horner_kernel.project(hom, hom_radii, _U_QUOTIENT, ETA, values, radii)
-        else:
-            values, radii = _project(values, radii)
+        values, radii = _project(values, radii)
     return (values, radii) if bound else values
 
 
