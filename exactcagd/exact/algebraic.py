@@ -30,16 +30,23 @@ from gmpy2 import mpq
 from ..errors import InputError
 from .scalars import rational_str, to_fmpq, to_rational
 
-__all__ = ["RealAlgebraic", "real_roots", "real_roots_bernstein", "integer_poly"]
+__all__ = ["RealAlgebraic", "real_roots", "real_roots_bernstein", "integer_poly", "bernstein_integer_poly", "exact_dyadic", "sign_at"]
 
 
 _MPQ = type(mpq(0))
 
 
-def _mpq_from_arf(x) -> mpq:
+def exact_dyadic(x) -> mpq:
+    """The exact value ``man * 2^exp`` of a flint ``arb`` with zero radius (e.g. a ball's
+    ``mid()`` or ``rad()``), as an ``mpq``.
+
+    >>> import flint
+    >>> str(exact_dyadic(flint.arb(3) / 8))
+    '3/8'
+    """
     man, exp = x.man_exp()
     man, exp = int(man), int(exp)
-    return mpq(man * 2**exp) if exp >= 0 else mpq(man, 2 ** (-exp))
+    return mpq(man << exp) if exp >= 0 else mpq(man, 1 << -exp)
 
 
 def integer_poly(coeffs) -> flint.fmpz_poly:
@@ -56,7 +63,8 @@ def integer_poly(coeffs) -> flint.fmpz_poly:
     return num
 
 
-def _sign_at(poly: flint.fmpz_poly, x: mpq) -> int:
+def sign_at(poly: flint.fmpz_poly, x) -> int:
+    """The exact sign (-1, 0, 1) of an integer polynomial at a rational ``x`` (``mpq``)."""
     value = poly(flint.fmpq(int(x.numerator), int(x.denominator)) if type(x) is _MPQ else to_fmpq(x))
     return (value > 0) - (value < 0)
 
@@ -83,7 +91,7 @@ def _normal_factor(poly: flint.fmpz_poly, lo: mpq, hi: mpq) -> flint.fmpz_poly:
             c0, c1 = (int(c) for c in factor.coeffs())
             if lo <= mpq(-c0, c1) <= hi:
                 candidates.append(factor)
-        elif _sign_at(factor, lo) * _sign_at(factor, hi) < 0:
+        elif sign_at(factor, lo) * sign_at(factor, hi) < 0:
             candidates.append(factor)
     if len(candidates) != 1:
         raise InputError(f"the interval ({lo}, {hi}) does not isolate one root of {poly}")
@@ -219,7 +227,7 @@ class RealAlgebraic:
         a, b = mpq(x) - quarter, mpq(x) + quarter
         if a < self.lo or b > self.hi:
             return
-        if _sign_at(self.poly, a) * _sign_at(self.poly, b) < 0:
+        if sign_at(self.poly, a) * sign_at(self.poly, b) < 0:
             self.lo, self.hi = a, b
 
     def _rounded_by_newton(self):
@@ -233,7 +241,7 @@ class RealAlgebraic:
         exact = mpq(x)
         a = (exact + mpq(math.nextafter(x, -math.inf))) / 2
         b = (exact + mpq(math.nextafter(x, math.inf))) / 2
-        if a < self.lo or b > self.hi or _sign_at(self.poly, a) * _sign_at(self.poly, b) >= 0:
+        if a < self.lo or b > self.hi or sign_at(self.poly, a) * sign_at(self.poly, b) >= 0:
             return None
         self.lo, self.hi = a, b
         return x
@@ -277,7 +285,7 @@ class RealAlgebraic:
                 # Each interval holds exactly one (simple) root; they hold the same one
                 # iff the overlap shows a sign change.
                 lo, hi = max(self.lo, other.lo), min(self.hi, other.hi)
-                if lo < hi and _sign_at(self.poly, lo) * _sign_at(self.poly, hi) < 0:
+                if lo < hi and sign_at(self.poly, lo) * sign_at(self.poly, hi) < 0:
                     return 0
             while not (self.hi <= other.lo or other.hi <= self.lo):
                 self.refine((self.hi - self.lo) / 2)
@@ -391,7 +399,7 @@ def _isolate_factor(factor: flint.fmpz_poly, window=(None, None)) -> list[RealAl
     balls = []
     for root, _ in factor.complex_roots():
         if root.imag.is_zero():
-            mid, rad = _mpq_from_arf(root.real.mid()), _mpq_from_arf(root.real.rad())
+            mid, rad = exact_dyadic(root.real.mid()), exact_dyadic(root.real.rad())
             balls.append((mid - rad, mid + rad))
     out = []
     w_lo, w_hi = window
@@ -400,7 +408,7 @@ def _isolate_factor(factor: flint.fmpz_poly, window=(None, None)) -> list[RealAl
             continue
         others = balls[:i] + balls[i + 1 :]
         a, b = _dyadic_hull(lo, hi, _coarsest_level(lo, hi, others))
-        if _sign_at(factor, a) * _sign_at(factor, b) >= 0:  # pragma: no cover - flint guarantees
+        if sign_at(factor, a) * sign_at(factor, b) >= 0:  # pragma: no cover - flint guarantees
             raise ArithmeticError("root isolation failed a sign check")
         out.append(RealAlgebraic(factor, a, b, _checked=True))
     return out
@@ -411,13 +419,18 @@ def real_roots(coeffs, lo=None, hi=None) -> list[tuple[RealAlgebraic, int]]:
 
     Parameters
     ----------
-    coeffs : sequence of exact numbers, power basis, lowest degree first
+    coeffs : sequence of exact numbers, power basis, lowest degree first; or a nonzero
+        ``flint.fmpz_poly`` (taken as it is)
     lo, hi : optional bounds (``None`` = unbounded)
 
     Returns
     -------
     list of (RealAlgebraic, multiplicity), sorted increasingly.
     """
+    if isinstance(coeffs, flint.fmpz_poly):
+        if coeffs == 0:
+            raise InputError("the zero polynomial has every number as a root")
+        return _real_roots_of(coeffs, lo, hi)
     return _real_roots_of(integer_poly(coeffs), lo, hi)
 
 
@@ -450,20 +463,48 @@ def _real_roots_of(poly: flint.fmpz_poly, lo=None, hi=None) -> list[tuple[RealAl
     return out
 
 
+def bernstein_integer_poly(coeffs) -> flint.fmpz_poly:
+    """Primitive integer power form, positive leading coefficient, of ``sum c_i B_i^n(t)``.
+
+    The same roots as the Bernstein polynomial with rational coefficients ``c`` on [0, 1]
+    (the same polynomial as :func:`integer_poly` of its power coefficients): with ``L`` the
+    lcm of the denominators, the scaled coefficients ``b_i = L C(n, i) c_i`` are integers and
+    ``(1 - t)^n b(t / (1 - t))`` is the power form times ``L`` (Sederberg's notes 003, 3.3;
+    :func:`exactcagd.exact.bernstein.scaled_to_power`, one Taylor shift in ``fmpz_poly``).
+
+    Parameters
+    ----------
+    coeffs : sequence of rationals (gmpy2 ``mpq``/``mpz``, ``int``), not all zero
+
+    Examples
+    --------
+    >>> bernstein_integer_poly([mpq(1), mpq(-3), mpq(1)])      # 8 t^2 - 8 t + 1
+    8*x^2 + (-8)*x + 1
+    """
+    from .bernstein import scaled_to_power
+
+    n = len(coeffs) - 1
+    qs = [x if type(x) is _MPQ else to_rational(x, where=f"coefficient {i}") for i, x in enumerate(coeffs)]
+    dens = [int(q.denominator) for q in qs]
+    lcm = math.lcm(*dens)
+    scaled = [int(q.numerator) * (lcm // d) * math.comb(n, i) for i, (q, d) in enumerate(zip(qs, dens))]
+    power = scaled_to_power(flint.fmpz_poly(scaled), n)
+    if power.is_zero():
+        raise InputError("the zero polynomial has every number as a root")
+    content = power.content()
+    if content != 1:
+        power = power // content
+    return -power if power.leading_coefficient() < 0 else power
+
+
 def real_roots_bernstein(coeffs, lo=0, hi=1) -> list[tuple[RealAlgebraic, int]]:
     """Real roots in ``[lo, hi]`` of a polynomial given by Bernstein coefficients on [0, 1]."""
     import numpy as np
 
-    from .bernstein import as_coefficients, binomial, scaled_to_power, to_power
+    from .bernstein import as_coefficients, to_power
 
     c = coeffs if isinstance(coeffs, np.ndarray) else as_coefficients(coeffs)
-    if c.dtype == object and all(type(x) is _MPQ for x in c):
+    if c.dtype == object and c.ndim == 1 and all(type(x) is _MPQ for x in c):
         # Bernstein -> power form in flint (scaled form, one Taylor shift: notes 3.3), no mpq arrays
-        n = len(c) - 1
-        power = scaled_to_power(flint.fmpq_poly([flint.fmpq(int(x.numerator), int(x.denominator)) * binomial(n, i) for i, x in enumerate(c)]), n)
-        if power == 0:
-            raise InputError("the zero polynomial has every number as a root")
-        num = power.numer()
-        num = num // num.content() if num.content() != 1 else num
-        return _real_roots_of(-num if num.coeffs()[-1] < 0 else num, lo, hi)
+        return _real_roots_of(bernstein_integer_poly(c), lo, hi)
     return real_roots(list(to_power(c)), lo, hi)

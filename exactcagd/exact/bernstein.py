@@ -193,11 +193,9 @@ def _to_power_flint(column) -> list:
 
 
 def _reverse(p, n: int):
-    """``t^n p(1/t)`` of a flint polynomial of degree ``<= n``."""
-    import flint
-
+    """``t^n p(1/t)`` of a flint polynomial of degree ``<= n`` (same flint type: fmpq_poly, fmpz_poly)."""
     c = p.coeffs()
-    return flint.fmpq_poly((c + [flint.fmpq(0)] * (n + 1 - len(c)))[::-1])
+    return type(p)((c + [0] * (n + 1 - len(c)))[::-1])
 
 
 def scaled_to_power(p, n: int):
@@ -206,11 +204,9 @@ def scaled_to_power(p, n: int):
     ``p`` holds ``b_i = C(n,i) c_i`` as the coefficient of ``t^i``; the result is
     ``(1 - t)^n p(t / (1 - t)) = sum_i c_i B_i^n(t)``.  With ``R(y) = y^n p(1/y)``,
     ``t^-n (1 - t)^n p(t / (1 - t)) = R(1/t - 1)``: one Taylor shift between two
-    reversals, instead of ``O(n^2)`` rational operations.
+    reversals, instead of ``O(n^2)`` rational operations.  An ``fmpz_poly`` stays integral.
     """
-    import flint
-
-    return _reverse(_reverse(p, n)(flint.fmpq_poly([-1, 1])), n)
+    return _reverse(_reverse(p, n)(type(p)([-1, 1])), n)
 
 
 def power_to_scaled(p, n: int):

@@ -42,13 +42,15 @@ True
 from __future__ import annotations
 
 import heapq
+import math
 from dataclasses import dataclass
 
+import flint
 import numpy as np
 from gmpy2 import mpq
 
 from ..errors import DimensionError, InputError, LimitError
-from ..exact.algebraic import real_roots_bernstein
+from ..exact.algebraic import bernstein_integer_poly, exact_dyadic, real_roots, sign_at
 from ..exact.bernstein import as_coefficients, derivative
 from ..exact.scalars import to_rational, to_tolerance
 from ..geometry._validate import instance_of
@@ -473,13 +475,19 @@ def _by_derivative(y: np.ndarray, a: float, b: float, tol: float, out: list, err
 
 
 # ---------------------------------------------------------------- certification
-def _prepare(coeffs) -> tuple[np.ndarray, list[Root], np.ndarray]:
-    """Exact coefficients: endpoint roots found exactly and deflated; scaled by 2^k."""
+def _validated(coeffs) -> np.ndarray:
+    """Exact 1-D coefficient array of a nonzero polynomial (errors name the argument)."""
     c = coeffs if (isinstance(coeffs, np.ndarray) and coeffs.dtype == object) else as_coefficients(coeffs)
     if c.ndim != 1:
         raise DimensionError("a Bernstein polynomial needs a 1-D coefficient sequence")
     if all(x == 0 for x in c):
         raise InputError("the zero polynomial has every number as a root")
+    return c
+
+
+def _prepare(coeffs) -> tuple[np.ndarray, list[Root], np.ndarray]:
+    """Exact coefficients: endpoint roots found exactly and deflated; scaled by 2^k."""
+    c = _validated(coeffs)
     ends: list[Root] = []
     k0 = 0
     while c[0] == 0:
@@ -714,17 +722,17 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
     if method not in METHODS:
         raise InputError(f"unknown root-finding method {method!r}; expected one of {METHODS}")
     tol = to_tolerance(tol)
+    if method == "exact":
+        return _exact_roots(_validated(coeffs), tol)
     c, ends, y = _prepare(coeffs)
     if len(c) <= 1:
         return ends
-    if method == "exact":
-        return sorted(ends + _exact_roots(c, tol), key=lambda r: r.t)
     finder = marching_roots if method == "marching" else isolating_roots
     try:
         estimates = finder(y, tol)
     except LimitError:
         # the float method hit its work bound: the exact route answers (certified)
-        return sorted(ends + _exact_roots(c, tol), key=lambda r: r.t)
+        return _exact_roots(c, tol)
     if not certify:
         raw = [Root(t, (t, t), m, False, False) for t, m in estimates]
         return sorted(ends + raw, key=lambda r: r.t)
@@ -733,18 +741,112 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
 
 
 def _exact_roots(c: np.ndarray, tol: float) -> list[Root]:
-    """Roots in the open interval (0, 1) of exact Bernstein coefficients ``c``, by exact isolation.
+    """Roots in [0, 1] of exact Bernstein coefficients ``c``, every one certified.
 
-    Each isolating interval is refined by exact bisection below ``tol`` and rounded
-    outward to floats (at most one float step wider at each end), so the enclosure still
-    holds the root; ``t`` is the root rounded to a nearby float inside the enclosure.
+    The integer power form is factored over the integers; a linear factor gives its
+    rational root exactly; the real roots of every other (irreducible) factor come from
+    flint's certified root balls (:func:`_roots_in_balls`).  When a ball cannot be decided
+    at the precisions of ``BALL_PRECISIONS``, or two enclosures would not be disjoint, the
+    exact isolation and bisection route (:func:`_roots_by_bisection`) answers instead.
     """
+    poly = bernstein_integer_poly(c)
+    if poly.degree() < 1:
+        return []
+    roots = _roots_from_factors(poly)
+    return _roots_by_bisection(poly, tol) if roots is None else roots
+
+
+#: working precisions (bits) of flint's root balls, tried in turn for each irreducible factor
+BALL_PRECISIONS = (64, 192)
+
+
+def _roots_from_factors(poly: flint.fmpz_poly) -> list[Root] | None:
+    """Roots in [0, 1] of a nonconstant integer polynomial, or None when undecided."""
+    _, factors = poly.factor()
+    roots = []
+    for factor, mult in factors:
+        if factor.degree() == 1:
+            c0, c1 = factor.coeffs()
+            q = mpq(-int(c0), int(c1))
+            if 0 <= q <= 1:
+                roots.append(Root(float(q), iv.enclose_scalar(q), int(mult), True, True))
+            continue
+        for prec in BALL_PRECISIONS:
+            found = _roots_in_balls(factor, int(mult), prec)
+            if found is not None:
+                break
+        else:
+            return None
+        roots.extend(found)
+    roots.sort(key=lambda r: r.interval)
+    if any(left.interval[1] >= right.interval[0] for left, right in zip(roots, roots[1:])):
+        return None  # two roots within a float step of each other: enclosures would overlap
+    return roots
+
+
+def _roots_in_balls(factor: flint.fmpz_poly, mult: int, prec: int) -> list[Root] | None:
+    """The roots in (0, 1) of an irreducible integer polynomial of degree >= 2, from flint's
+    root balls at ``prec`` bits, or None when a ball does not decide the rounding.
+
+    ``fmpz_poly.complex_roots`` (Arb's ``arb_fmpz_poly_complex_roots``) returns disjoint
+    balls, each holding exactly one root, real roots with an imaginary part of exactly zero.
+    A ball inside (0, 1) or wholly outside [0, 1] decides membership; one over 0 or 1 is
+    decided by exact signs (:func:`_inside_unit`).  The root rounds to the float ``x``
+    nearest to the midpoint when the ball lies strictly between the midpoints of ``x`` and
+    its float neighbours (arb's comparisons are certain, and those midpoints are exact at
+    ``prec >= 54`` bits); the ball rounded outward to floats (``x`` and at most one float
+    step on each side) is the enclosure.
+    """
+    old = flint.ctx.prec
+    flint.ctx.prec = prec
+    try:
+        out = []
+        for ball, _ in factor.complex_roots():
+            if not ball.imag.is_zero():
+                continue
+            real = ball.real
+            if real < 0 or real > 1:
+                continue
+            if not (real > 0 and real < 1) and not _inside_unit(factor, real):
+                continue
+            x = float(real.mid())
+            below, above = math.nextafter(x, -math.inf), math.nextafter(x, math.inf)
+            exact = flint.arb(x)
+            if not ((exact + below) / 2 < real < (exact + above) / 2):
+                return None  # the ball straddles a rounding boundary
+            lo, hi = (x if real >= x else below), (x if real <= x else above)
+            out.append(Root(x, (max(lo, 0.0), min(hi, 1.0)), mult, True, True))
+        return out
+    finally:
+        flint.ctx.prec = old
+
+
+def _inside_unit(factor: flint.fmpz_poly, real: flint.arb) -> bool:
+    """Whether the one root in a real root ball over 0 or 1 lies in (0, 1), by exact signs.
+
+    The factor has no rational root, so it is nonzero at every rational point and changes
+    sign exactly once in the ball: the root exceeds 0 iff the factor has the same sign at
+    0 as at the ball's lower end (and likewise at 1 and the upper end).
+    """
+    mid, rad = exact_dyadic(real.mid()), exact_dyadic(real.rad())
+    lo, hi = mid - rad, mid + rad
+    if lo <= 0 and sign_at(factor, lo) != sign_at(factor, mpq(0)):
+        return False
+    return not (hi >= 1 and sign_at(factor, hi) != sign_at(factor, mpq(1)))
+
+
+def _roots_by_bisection(poly: flint.fmpz_poly, tol: float) -> list[Root]:
+    """Roots in [0, 1] by exact isolation (:func:`exactcagd.exact.algebraic.real_roots`):
+    each isolating interval is refined by exact bisection below ``tol`` and rounded outward
+    to floats (at most one float step wider at each end), so the enclosure still holds the
+    root; ``t`` is ``float(root)`` (correctly rounded when the float Newton estimate is
+    confirmed by exact signs)."""
     width = mpq(tol)  # exact binary value, independent of the user's float policy
     roots = []
-    for r, m in real_roots_bernstein(c, 0, 1):
+    for r, m in real_roots(poly, 0, 1):
         lo, hi = r.interval(width)
         roots.append(Root(float(r), (iv.enclose_scalar(lo)[0], iv.enclose_scalar(hi)[1]), m, True, True))
-    return roots
+    return sorted(roots, key=lambda r: r.t)
 
 
 # ---------------------------------------------------------------- 9.4 line ∩ rational curve
