@@ -46,6 +46,7 @@ __all__ = [
     "implicitize",
     "implicit_equation",
     "ImplicitEquation",
+    "proper_at_fiber",
     "implicit_resultant",
     "implicit_bezier",
     "implicit_moving_lines",
@@ -237,11 +238,51 @@ def l_matrix(curve) -> dict:
     return out
 
 
-def _finish(R, g, n: int) -> ImplicitEquation:
+def proper_at_fiber(X, Y, W, t0: int = 0) -> bool:
+    """A cheap proof that the parametrization ``(X : Y : W)`` is proper (index ``r = 1``).
+
+    ``True`` when ``W(t0) != 0``, ``A(s) = X(s) W(t0) - X(t0) W(s)`` or
+    ``B(s) = Y(s) W(t0) - Y(t0) W(s)`` has the full degree ``n = max deg(X, Y, W)`` and
+    ``deg gcd(A, B) = 1``; ``False`` means "not decided" (never "improper").
+
+    Proof.  ``X, Y, W`` are coprime (base points removed) and the curve is not a point.
+    By Lüroth's theorem the parametrization is ``Q(phi(s))`` with ``Q`` proper and ``phi``
+    a rational function of degree ``r`` (the index: the resultant is ``c F^r``, notes
+    17.5, 18.3).  The fibre ``phi^-1(phi(t0))`` has ``r`` points of the projective line
+    counted with multiplicity; each point ``s`` of it has ``(X : Y : W)(s) = (X : Y : W)(t0)``,
+    an affine point since ``W(t0) != 0``, so ``W(s) != 0`` and ``x(s) - x(t0)`` (``x = X/W``)
+    vanishes at ``s`` to at least the multiplicity of ``phi - phi(t0)`` there; the same
+    holds for the homogenized degree-``n`` forms of ``A`` and ``B``.  The fibre point at
+    infinity would be a common root at infinity, i.e. ``deg A < n`` and ``deg B < n``;
+    with one of them of degree ``n`` all ``r`` fibre points are finite common roots, so
+    ``r <= deg gcd(A, B)``, and ``deg gcd = 1`` (``t0`` itself is a root) gives ``r = 1``.
+
+    >>> import flint
+    >>> X, Y, W = flint.fmpz_poly([0, 1]), flint.fmpz_poly([0, 0, 1]), flint.fmpz_poly([1])
+    >>> proper_at_fiber(X, Y, W), proper_at_fiber(X * X, Y * Y, W)   # (t, t^2) and (t^2, t^4)
+    (True, False)
+    """
+    w0 = W(t0)
+    if w0 == 0:
+        return False
+    n = max(X.degree(), Y.degree(), W.degree())
+    A = X * w0 - W * X(t0)
+    B = Y * w0 - W * Y(t0)
+    if max(A.degree(), B.degree()) < n:
+        return False
+    return A.gcd(B).degree() == 1
+
+
+def _finish(R, g, n: int, proper: bool = False) -> ImplicitEquation:
+    """Normalized implicit equation from the resultant ``R = c F^r``; ``proper=True``
+    (proved by :func:`proper_at_fiber`) skips the squarefree factorization (``r = 1``)."""
     if R == 0:  # pragma: no cover - base points were removed
         raise ArithmeticError("the resultant vanished identically")
     if not isinstance(R, flint.fmpz_mpoly) or R.context() is not XY:
         R = XY.from_dict({tuple(m): int(c) for m, c in R.to_dict().items()}) if isinstance(R, flint.fmpz_mpoly) else XY.from_dict({(0, 0): int(R)})
+    if proper:
+        F = normalize_implicit(R)
+        return ImplicitEquation(F, int(F.total_degree()), 1, g, n)
     _, factors = R.factor_squarefree()
     factors = [(f, int(e)) for f, e in factors if f.total_degree() > 0]
     if len(factors) != 1:  # pragma: no cover - the image of a rational curve is irreducible
@@ -280,17 +321,18 @@ def implicit_equation(curve, method: str = "resultant", strict: bool = False) ->
         R = implicit_bezier(X, Y, W)
     else:
         R = implicit_moving_lines(X, Y, W)
+    proper = proper_at_fiber(X, Y, W)
     if strict:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ImproperParametrizationWarning)
-            eq = _finish(R, g, n)
+            eq = _finish(R, g, n, proper)
         if eq.index > 1:
             raise ImproperParametrizationError(
                 f"the parametrization is not proper: the resultant is F^{eq.index} with F = {eq.poly.as_expr()} "
                 f"(the curve is traced {eq.index} times)"
             )
         return eq
-    return _finish(R, g, n)
+    return _finish(R, g, n, proper)
 
 
 def implicitize(curve, method: str = "resultant", strict: bool = False) -> sympy.Poly:
