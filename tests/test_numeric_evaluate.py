@@ -449,3 +449,44 @@ def test_default_kernel_bit_identical_on_hard_inputs(monkeypatch):
         check_bounds(exact, values[keep], radii[keep])
     assert np.isinf(evaluate(hard[1], special)[1]).any()  # overflow
     assert np.isinf(evaluate(hard[2], special)[1][7]).all() and np.isfinite(evaluate(hard[2], special)[1][:6]).all()
+
+
+def test_default_kernel_checks_long_float_arrays_itself():
+    """The default reads a long float64 array as it is (no copy) and the kernel checks
+    0 <= t <= 1 itself: one bad parameter among 5000 raises the errors of the validation,
+    and read-only, strided and list inputs give the same bits."""
+    curve = BezierCurve([[1, 2, 3], [-1, 0, 2], ["1/3", 5, -2], [0, 1, 1]], weights=[1, 3, 2, 1])
+    ts = np.linspace(0.0, 1.0, 5000)
+    for bad, error in ((np.nan, InexactInputError), (np.inf, InexactInputError), (-np.inf, InexactInputError),
+                       (-1e-300, DomainError), (1.0000000000000002, DomainError), (2.0, DomainError)):
+        arr = ts.copy()
+        arr[4321] = bad
+        for bound in (True, False):
+            with pytest.raises(error):
+                evaluate(curve, arr, bound=bound)
+    values, radii = evaluate(curve, ts)
+    readonly = ts.copy()
+    readonly.flags.writeable = False
+    for variant in (readonly, np.repeat(ts, 2)[::2], ts.tolist(), -(-ts)):
+        other_values, other_radii = evaluate(curve, variant)
+        assert np.array_equal(values, other_values) and np.array_equal(radii, other_radii)
+    exact = [exact_point(curve.control_points, curve.weights, q(ts[i])) for i in (0, 1, 2500, 4999)]
+    check_bounds(exact, values[[0, 1, 2500, 4999]], radii[[0, 1, 2500, 4999]])
+
+
+@pytest.mark.parametrize("limit", [1000, 7])
+def test_default_kernel_arguments_cached_by_identity(monkeypatch, limit):
+    """Curves come and go (Python reuses a freed curve's id); each evaluation must use its
+    own curve's coefficients, also across the cache's clearing."""
+    import exactcagd.numeric.evaluation as module
+
+    monkeypatch.setattr(module, "_KERNEL_ARGUMENTS_LIMIT", limit)
+    ts = np.full(5000, 0.5)  # s = t / (1 - t) = 1: every value below is exact
+    for k in range(150):
+        curve = BezierCurve([[k, -k], [k + 4, 3 * k]])  # freed at the next iteration ...
+        values = evaluate(curve, ts, bound=False)
+        assert values[0].tolist() == values[-1].tolist() == [k + 2, k]
+        module._curve_coefficients.cache_clear()  # ... unless a cache keeps it
+    first = BezierCurve([[0], [8]])
+    equal = BezierCurve([[0], [8]])
+    assert evaluate(first, ts, bound=False)[0, 0] == evaluate(equal, ts, bound=False)[0, 0] == 4.0

@@ -70,7 +70,15 @@ def _horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, val
     over ``k`` (numpy's ``np.sum``); ``g = gamma_over(6n + 1)``, ``eta = 2^-1074``,
     ``u_quotient >= u / (1 - u)`` as in the numpy path.  With ``bound`` false only
     ``values`` is written (``radii`` may be any float array).
+
+    Returns ``False``, before any other work, if some ``t`` is not in [0, 1] (or is NaN):
+    the caller's validation then says which.
     """
+    outside = 0
+    for i in range(t.shape[0]):  # one vectorized pass, no early exit
+        outside += 0 if 0.0 <= t[i] <= 1.0 else 1
+    if outside:
+        return False
     n = c.shape[0] - 1
     a_factor = (2 * n + 2) * eta
     tiny_factor = 2 * n * eta
@@ -127,6 +135,7 @@ def _horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, val
             if bound:
                 for i in range(m):
                     radii[start + i, j] = e[i]
+    return True
 
 
 def _coordinate(c, c_abs_sum, j, n, first_steps, x, low, scale, a, a_j, any_tiny, tiny_factor, min_normal, g, bound,
@@ -254,6 +263,6 @@ def _compiled(func):
     return kernel
 
 
-def horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, values, radii, bound) -> None:
+def horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, values, radii, bound) -> bool:
     """The compiled :func:`_horner_curve` (numba; compiled at the first call)."""
-    _compiled(_horner_curve)(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, values, radii, bound)
+    return _compiled(_horner_curve)(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, values, radii, bound)

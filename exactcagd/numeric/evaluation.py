@@ -424,18 +424,18 @@ class _Default(_HornerBernstein):
     check = _DeCasteljau.check
 
     @classmethod
-    def compiled(cls, c: np.ndarray, c_abs: np.ndarray, t: np.ndarray, rational: bool, bound: bool):
-        """The whole evaluation by the kernel: values ``(P, d)`` (and radii), projected if ``rational``.
-
-        ``c`` and ``c_abs`` are the cached ``(n + 1, D)`` coefficients (``D = d + 1`` for a
-        rational curve: the weight last); the kernel divides by the weight block by block.
+    def compiled(cls, curve: BezierCurve, t: np.ndarray, bound: bool):
+        """The whole evaluation by the kernel: values ``(P, d)`` (and radii), divided by the
+        weight block by block if the curve is rational; ``None`` if some ``t`` is not in
+        [0, 1] (NaN included), found before any other work.
         """
-        n = c.shape[0] - 1
-        dim = c.shape[1] - 1 if rational else c.shape[1]
+        c, c_abs_sum, g = _kernel_arguments(curve)
+        dim = c.shape[1] - 1 if curve.is_rational else c.shape[1]
         # one allocation for both outputs (see evaluate)
         values, radii = np.empty((2, t.size, dim)) if bound else (np.empty((t.size, dim)),) * 2
-        _horner_kernel.horner_curve(c, np.sum(c_abs, axis=0), t, gamma_over(cls.count(n, t)), ETA, MIN_NORMAL,
-                                    _U_QUOTIENT, rational, values, radii, bound)
+        if not _horner_kernel.horner_curve(c, c_abs_sum, t, g, ETA, MIN_NORMAL, _U_QUOTIENT, curve.is_rational,
+                                           values, radii, bound):
+            return None
         return (values, radii) if bound else values
 
 
@@ -565,6 +565,31 @@ def _curve_coefficients(curve: BezierCurve, method: str) -> tuple[np.ndarray, np
     return _frozen(c, c_abs, np.stack([c, c_abs], axis=1))
 
 
+#: the kernel's arguments ``(c, sum_k |c_k|, gamma_over(6n + 1))`` of recently evaluated
+#: curves, keyed by identity (a BezierCurve is immutable): hashing a curve for the
+#: lru_cache key builds its point tuples, ~4 us per call
+_KERNEL_ARGUMENTS: dict = {}
+_KERNEL_ARGUMENTS_LIMIT = 64
+
+
+def _kernel_arguments(curve: BezierCurve) -> tuple[np.ndarray, np.ndarray, float]:
+    hit = _KERNEL_ARGUMENTS.get(id(curve))
+    if hit is not None and hit[0] is curve:  # the entry holds the curve: its id is not reused
+        return hit[1]
+    c, c_abs, _ = _curve_coefficients(curve, _Default.name)
+    arguments = (c, *_frozen(np.sum(c_abs, axis=0)), gamma_over(_Default.count(c.shape[0] - 1, None)))
+    if len(_KERNEL_ARGUMENTS) >= _KERNEL_ARGUMENTS_LIMIT:
+        _KERNEL_ARGUMENTS.clear()
+    _KERNEL_ARGUMENTS[id(curve)] = (curve, arguments)
+    return arguments
+
+
+def _is_float_vector(ts) -> bool:
+    """``ts`` is a 1-d contiguous, writable float64 ndarray: the kernel reads it as it is."""
+    return (type(ts) is np.ndarray and ts.dtype == np.float64 and ts.ndim == 1 and ts.flags.c_contiguous
+            and ts.flags.writeable)
+
+
 @lru_cache(maxsize=16)
 def _surface_coefficients(surface: BezierSurface, method: str) -> tuple[np.ndarray, np.ndarray]:
     exact = surface.net_array() if not surface.is_rational else surface.homogeneous()
@@ -668,11 +693,16 @@ def evaluate(curve, ts, method: str = "auto", bound: bool = True):
     if not isinstance(curve, BezierCurve):
         raise InputError(f"evaluate needs a BezierCurve, got {type(curve).__name__}")
     m = _method(method)
+    if m is _Default and _is_float_vector(ts) and _use_kernel(ts.size):
+        # the kernel checks 0 <= t <= 1 itself (no copy of ts); if it refuses a
+        # parameter, the validation below names it
+        result = _Default.compiled(curve, ts, bound)
+        if result is not None:
+            return result
     t = _parameters(ts, "ts")
     m.check(t, "ts")
     if m is _Default and _use_kernel(t.size):
-        c, c_abs, _ = _curve_coefficients(curve, m.name)
-        return _Default.compiled(c, c_abs, np.ascontiguousarray(t), curve.is_rational, bound)
+        return _Default.compiled(curve, t, bound)  # t passed the kernel's own check
     c, c_abs, pair = (a[..., None] for a in _curve_coefficients(curve, m.name))
     dim = c.shape[1]
     # one allocation for both outputs: two fresh arrays of this size each cost their page
