@@ -98,8 +98,9 @@ def test_planted_violation_just_above_the_bound_is_caught():
 
 
 def test_ball_and_exact_bisections_agree_to_high_precision():
-    """The ball bisection (default) and the exact one bound the same maximum: both >= the
-    exactly sampled maximum, and both stop within the factor (1 + rel) of it."""
+    """The ball bisection (default, coefficients rounded outward to ``ball.PREC`` bits) and the
+    exact one bound the same maximum: both >= the exactly sampled maximum, and both stop
+    within the factor (1 + rel) of it."""
     import flint
 
     from exactcagd.composition import ball
@@ -107,15 +108,88 @@ def test_ball_and_exact_bisections_agree_to_high_precision():
 
     F = BezierCurve([[0, 0, 1], ["1/3", 2, 0], ["2/3", -1, "1/5"], [1, "1/7", 0]], weights=[1, 2, "1/2", 1])
     X = BezierCurve([[0, 0, 1], ["1/2", "3/2", 0], ["3/4", "-1/2", 0], [1, "1/7", 0]])
-    e_scaled, w_scaled, D = module._squared_error(F, X, [Fr(0), Fr(1)])
-    with ball.precision():
-        quick = ball.ratio_max_bound(e_scaled, w_scaled, D, 0.02, 400)
-    e_pow = module.bz.scaled_to_power(e_scaled, D)
-    w_pow = module.bz.scaled_to_power(w_scaled, D)
-    slow = module._exact_bisection(e_pow, w_pow, D, 0.02, 400, None) ** 2
+    e_scaled, w_scaled, D = module._squared_error(F.homogeneous(), X.homogeneous())
+    quick = module.ratio_max_bound(e_scaled, w_scaled, D, 0.02, 400, bits=ball.PREC)
+    slow = module.ratio_max_bound(e_scaled, w_scaled, D, 0.02, 400)
     sampled = _sup_sampled_sq(([[Fr(x) for x in p] for p in F.control_points], [Fr(w) for w in F.weights]),
                               [[Fr(x) for x in p] for p in X.control_points], [Fr(0), Fr(1)])
     quick, slow = (Fr(int(x.numerator), int(x.denominator)) for x in (quick, slow))
     assert quick >= sampled and slow >= sampled
     assert abs(quick - slow) <= max(quick, slow) * Fr(2, 100)
-    assert flint.ctx.prec == 53  # the working precision was restored
+    assert flint.ctx.prec == 53  # the working precision is untouched
+
+
+def test_halving_matrix_is_de_casteljau_at_one_half():
+    """2^-n times the integer matrix gives both halves' Bernstein coefficients; reference:
+    the de Casteljau triangle at t = 1/2 in Fractions (its two edges, notes 2.4)."""
+    from exactcagd.composition.distance_bound import _halving_matrix
+
+    for n in (1, 2, 5, 9):
+        b = [Fr((7 * i * i - 3 * i + 2) % 11 - 5, 3) for i in range(n + 1)]
+        rows, left, right = [b], [b[0]], [b[-1]]
+        while len(rows[-1]) > 1:
+            prev = rows[-1]
+            rows.append([(x + y) / 2 for x, y in zip(prev[:-1], prev[1:])])
+            left.append(rows[-1][0])
+            right.append(rows[-1][-1])
+        matrix = _halving_matrix(n).tolist()
+        got = [sum(Fr(int(m)) * x for m, x in zip(row, b)) / 2**n for row in matrix]
+        assert got == left + right[::-1]
+
+
+def _bump_case(rational: bool, delta: Fr):
+    """``F = C + delta (4 t (1 - t), 0, 0)``: ``max |F - C| = delta`` exactly, at t = 1/2 (the
+    reference is the construction); Bernstein coefficients from the power form by the
+    textbook formula (sympy), ``F = H / W`` with ``W = 1 + t`` in the rational case."""
+    import numpy as np
+    import sympy as sp
+    from gmpy2 import mpq
+
+    t = sp.Symbol("t")
+    c = [sp.Rational(1, 3) + t - 2 * t**2, 2 * t + sp.Rational(1, 5) * t**2, 1 - 3 * t**2]
+    f = [c[0] + sp.Rational(delta.numerator, delta.denominator) * 4 * t * (1 - t)] + c[1:]
+    w = 1 + t if rational else sp.Integer(1)
+    num = [sp.expand(w * x) for x in f] + [w]
+    deg = max(sp.Poly(x, t).degree() for x in num)
+
+    def bern(expr, n):
+        a = sp.Poly(expr, t).all_coeffs()[::-1] + [0] * (n + 1)
+        return [sum(sp.binomial(i, k) / sp.binomial(n, k) * a[k] for k in range(i + 1)) for i in range(n + 1)]
+
+    cols = [bern(x, deg) for x in num]
+    hom_f = np.array([[mpq(str(col[i])) for col in cols] for i in range(deg + 1)], dtype=object)
+    ccols = [bern(x, 2) for x in c] + [[1, 1, 1]]
+    hom_c = np.array([[mpq(str(col[i])) for col in ccols] for i in range(3)], dtype=object)
+    return hom_f, hom_c
+
+
+def test_interior_maximum_planted_violation_is_caught_by_the_bisection():
+    """The hull bound on [0, 1] is (16/6) delta^2 here, so only the bisection can prove a
+    bound near delta: delta = tol (1 + 2^-50) must never certify <= tol (either arithmetic),
+    delta = tol 49/50 must (the bisection stops within 1 + rel = 1.02 of max E = delta^2)."""
+    from exactcagd.composition import ball
+    from exactcagd.composition.distance_bound import homogeneous_distance_bound
+
+    tol = Fr(1, 2**12)
+    for rational in (False, True):
+        for delta, ok in ((tol * (1 + Fr(1, 2**50)), False), (tol * Fr(49, 50), True)):
+            hom_f, hom_c = _bump_case(rational, delta)
+            stats: dict = {}
+            bound = homogeneous_distance_bound(hom_f, hom_c, target=tol, stats=stats)
+            assert Fr(int(bound.numerator), int(bound.denominator)) >= delta
+            assert (bound <= tol) == ok
+            assert sum(stats.values()) == 1
+            if ok:
+                assert stats == {ball.BALL: 1}
+
+
+def test_a_tie_the_rounded_coefficients_cannot_prove_is_decided_exactly():
+    """X = F + (1/1000, 0): E = 10^-6 everywhere, not a dyadic number, so the outward-rounded
+    coefficients exceed target^2 = 10^-6; the exact coefficients prove the bound 1/1000."""
+    from exactcagd.composition import ball
+
+    F = [[Fr(0), Fr(0)], [Fr(1, 3), Fr(2)], [Fr(2, 3), Fr(-1)], [Fr(1), Fr(1, 7)]]
+    tol = Fr(1, 1000)
+    stats: dict = {}
+    bound = distance_bound(BezierCurve(F), BezierCurve(_shifted(F, tol)), target=tol, stats=stats)
+    assert bound == tol and stats == {ball.EXACT: 1}

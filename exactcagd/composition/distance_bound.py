@@ -8,7 +8,9 @@ reparametrization ``phi`` with ``phi(0) = 0``, ``phi(1) = 1`` and Bernstein coef
     E(t) = |N(t) - W(t) X(phi(t))|^2 / W(t)^2 = |F(t) - X(phi(t))|^2
 
 is a rational function whose numerator and denominator are computed exactly in
-Bernstein form (products, notes 9.3; composition ``X o phi`` by route (b)).  Then
+Bernstein form (products, notes 9.3; composition ``X o phi`` by route (b)); for two
+polynomial curves (constant weights) ``E = |F - X o phi|^2`` directly, of degree
+``2 max(n, deg)`` instead of ``2 (n + deg)``.  Then
 
     H(F, X) <= sup_t |F(t) - X(phi(t))| = sqrt(max E),
 
@@ -17,14 +19,15 @@ a bound on the Hausdorff distance of the two curve segments (every ``F(t)`` is w
 by the convex-hull property: on every sub-interval, (max Bernstein coefficient of the
 numerator) / (min Bernstein coefficient of ``W^2``), refined by bisection of [0, 1]
 until the bound is within a factor ``1 + rel`` of the values at the subdivision points.
-The bisection runs first in ball arithmetic (python-flint ``arb``, outward rounded,
-:mod:`exactcagd.composition.ball`), and again in exact arithmetic (python-flint
-``fmpq_poly``) only when the balls do not certify ``target``: the Bernstein coefficients of a
-polynomial on ``[a, b]`` come from its power form by two exact compositions with linear
-polynomials.  To keep the numbers short, the Bernstein coefficients on [0, 1] are first
-rounded *outward* to 64-bit dyadic rationals (numerator up, ``W^2`` down): a polynomial
-with larger Bernstein coefficients is pointwise larger on [0, 1], so every bound of the
-rounded pair bounds the exact ratio.  The final square root is rounded upwards.
+The Bernstein coefficients of a half interval come from those of the parent by de
+Casteljau at ``1/2``, which times ``2^D`` is an integer matrix (:func:`_halving_matrix`):
+the bisection is exact integer arithmetic (python-flint ``fmpz_mat``), one matrix product
+per split.  It runs first on the coefficients on [0, 1] rounded *outward* to
+:data:`~exactcagd.composition.ball.PREC` significant bits (numerator up, ``W^2`` down: a
+polynomial with larger Bernstein coefficients is pointwise larger on [0, 1], so every
+bound of the rounded pair bounds the exact ratio; ``"ball"``), and on the exact
+coefficients only when that does not prove ``target`` (``"exact"``).  The final square
+root is rounded upwards.
 
 >>> from exactcagd import BezierCurve
 >>> F = BezierCurve([[0, 0], [1, 1], [2, 0]])
@@ -36,6 +39,7 @@ mpq(0,1)
 from __future__ import annotations
 
 import heapq
+from functools import lru_cache
 
 import flint
 import numpy as np
@@ -46,9 +50,16 @@ from ..exact import bernstein as bz
 from ..exact.scalars import from_fmpq, to_rational_array
 from ..geometry.bezier_curve import BezierCurve
 from . import ball
-from .fast import _fmpq, compose_homogeneous_fast, scaled, unscaled
+from .fast import _binomials, _fmpq, compose_homogeneous_fast, scaled
 
-__all__ = ["distance_bound", "compose_with_reparametrization", "sqrt_upper", "bernstein_on"]
+__all__ = [
+    "bernstein_on",
+    "compose_with_reparametrization",
+    "distance_bound",
+    "homogeneous_distance_bound",
+    "ratio_max_bound",
+    "sqrt_upper",
+]
 
 
 def sqrt_upper(q: mpq, bits: int = 64) -> mpq:
@@ -77,19 +88,6 @@ def compose_with_reparametrization(cubic: BezierCurve, phi) -> np.ndarray:
     return compose_homogeneous_fast(net, curve)
 
 
-def _round(q: mpq, up: bool) -> mpq:
-    """Dyadic rational with 64 significant bits next to ``q``, rounded up (or down)."""
-    if q == 0:
-        return mpq(0)
-    e = int(abs(q.numerator).bit_length()) - int(q.denominator.bit_length())
-    scale = mpq(2) ** (64 - e)
-    scaled_q = q * scale
-    n = scaled_q.numerator // scaled_q.denominator  # floor
-    if up and n * scaled_q.denominator != scaled_q.numerator:
-        n += 1
-    return mpq(n) / scale
-
-
 def bernstein_on(power: flint.fmpq_poly, n: int, a, b) -> list:
     """Bernstein coefficients (degree ``n``) of the power-form polynomial on ``[a, b]``."""
     return [from_fmpq(c) for c in _bernstein_on_fmpq(power, n, a, b)]
@@ -103,33 +101,151 @@ def _bernstein_on_fmpq(power: flint.fmpq_poly, n: int, a, b) -> list:
     return [c / bz.binomial(n, i) for i, c in enumerate(hat)]
 
 
-def _squared_error(F: BezierCurve, cubic: BezierCurve, phi):
-    """Scaled Bernstein forms of ``|N Xw - W X|^2`` and ``(W Xw)^2`` (``X o phi = X/Xw``), degree ``D``."""
-    if cubic.is_rational:
-        raise InputError("the approximating cubic must be polynomial")
-    hom_f = F.homogeneous()
-    xphi = compose_with_reparametrization(cubic, phi)
-    n, k = hom_f.shape[0] - 1, xphi.shape[0] - 1
-    fw, xw = scaled(hom_f[:, -1]), scaled(xphi[:, -1])
+def _squared_error(hom_f: np.ndarray, hom_x: np.ndarray):
+    """``(e, w2, D)``: scaled Bernstein forms (flint ``fmpq_poly``, degree ``D``) of the squared error.
+
+    ``hom_f = (N, W)`` and ``hom_x = (X Xw, Xw)`` are homogeneous Bernstein coefficients.
+    In general ``e = |N Xw - W X|^2`` and ``w2 = (W Xw)^2`` (``D = 2 (n + k)``).  When both
+    weights are constant (two polynomial curves) the difference needs no common denominator:
+    ``e = |N / W - X|^2`` with both elevated to ``m = max(n, k)`` and ``w2`` is the constant
+    ``1`` (an ``fmpq``), ``D = 2 m`` -- the same function, of a lower degree.
+    """
+    n, k = hom_f.shape[0] - 1, hom_x.shape[0] - 1
+    wf, wx = hom_f[:, -1], hom_x[:, -1]
+    if all(x == wf[0] for x in wf) and all(x == wx[0] for x in wx):
+        m = max(n, k)
+        up_f, up_x = flint.fmpq_poly([1, 1]) ** (m - n), flint.fmpq_poly([1, 1]) ** (m - k)
+        f_scale, x_scale = 1 / _fmpq(wf[0]), 1 / _fmpq(wx[0])
+        err = flint.fmpq_poly([])
+        for c in range(hom_f.shape[1] - 1):
+            diff = scaled(hom_f[:, c]) * up_f * f_scale - scaled(hom_x[:, c]) * up_x * x_scale
+            err += diff * diff
+        return err, flint.fmpq(1), 2 * m
+    fw, xw = scaled(wf), scaled(wx)
     err = flint.fmpq_poly([])
     for c in range(hom_f.shape[1] - 1):
-        diff = scaled(hom_f[:, c]) * xw - fw * scaled(xphi[:, c])
+        diff = scaled(hom_f[:, c]) * xw - fw * scaled(hom_x[:, c])
         err += diff * diff
-    D = 2 * (n + k)
     w2 = fw * fw * xw * xw
-    return err, w2, D
+    return err, w2, 2 * (n + k)
 
 
-def _leaf_bound(e: list, w2: list):
-    """Upper bound of ``e / w2`` on the leaf (``mpq``), or ``None`` when ``w2`` is not yet bounded below.
+# ----------------------------------------------------------------------------- integer bisection
+@lru_cache(maxsize=64)
+def _halving_matrix(n: int) -> flint.fmpz_mat:
+    """``2^n`` times de Casteljau's subdivision at ``t = 1/2`` as an integer ``(2n + 2) x (n + 1)`` matrix.
 
-    ``e`` and ``w2`` are Bernstein coefficients as flint ``fmpq`` (from
-    :func:`_bernstein_on_fmpq`): ``e / w2 <= max e / min w2``.
+    Rows ``0..n`` give the Bernstein coefficients on ``[0, 1/2]``,
+    ``b'_i = 2^-i sum_j C(i, j) b_j``, rows ``n+1..2n+1`` those on ``[1/2, 1]``,
+    ``b''_i = 2^-(n-i) sum_j C(n-i, j-i) b_j`` (notes 2.4, the de Casteljau triangle's
+    two edges); scaled by ``2^n`` every entry is an integer, so subdivision is exact.
     """
-    low = min(w2)
-    if low <= 0:
-        return None
-    return max(from_fmpq(max(e)), mpq(0)) / from_fmpq(low)
+    left = [[bz.binomial(i, j) << (n - i) for j in range(n + 1)] for i in range(n + 1)]
+    right = [[bz.binomial(n - i, j - i) << i for j in range(n + 1)] for i in range(n + 1)]
+    return flint.fmpz_mat(left + right)
+
+
+def _integer_column(p: flint.fmpq_poly, n: int, bits: int | None, up: bool) -> tuple[list, flint.fmpq]:
+    """``(c, s)``: integers ``c_i`` with ``c_i s`` the Bernstein coefficients (degree ``n``) of the
+    scaled form ``p``, exactly (``bits=None``), or rounded outward to ``bits`` significant bits
+    of the largest one (``up``: every ``c_i s >= b_i``, else ``<=``): a dyadic enclosure."""
+    den = p.denom()
+    numer = p.numer().coeffs()
+    numer += [flint.fmpz(0)] * (n + 1 - len(numer))
+    binomials = _binomials(n)
+    if bits is None:  # common denominator den * lcm(C(n, i))
+        lcm = _binomial_lcm(n)
+        return [a * (lcm // b) for a, b in zip(numer, binomials)], flint.fmpq(1, den * lcm)
+    top = max(int(abs(a)).bit_length() for a in numer)
+    shift = max(0, bits - top + int(den).bit_length())
+    scaled_den = [den * b for b in binomials]
+    if up:  # ceiling: -floor(-x)
+        column = [-((-a << shift) // d) for a, d in zip(numer, scaled_den)]
+    else:
+        column = [(a << shift) // d for a, d in zip(numer, scaled_den)]
+    return column, flint.fmpq(1, flint.fmpz(1) << shift)
+
+
+@lru_cache(maxsize=64)
+def _binomial_lcm(n: int) -> int:
+    from math import lcm
+
+    return lcm(*_binomials(n))
+
+
+def ratio_max_bound(e: flint.fmpq_poly, w2, n: int, rel, max_leaves: int, target2=None, bits: int | None = None):
+    """An exact rational ``>= max_[0,1] e / w2`` by bisection, or ``None`` (``w2`` not bounded below).
+
+    ``e`` and ``w2`` are scaled Bernstein forms of degree ``n`` (``w2`` may be a positive
+    constant ``fmpq``).  On a leaf the bound is ``max_i e_i / min_i w_i`` of its Bernstein
+    coefficients (convex-hull property); the leaf with the largest bound is halved (exact
+    integer de Casteljau, :func:`_halving_matrix`) until the bound is within ``1 + rel`` of the
+    largest end value ``e / w2`` seen, is ``<= target2``, an end value exceeds ``target2``, or
+    ``max_leaves`` leaves exist.  ``bits``: round the coefficients on [0, 1] outward first
+    (``e`` up, ``w2`` down: a pointwise larger ``e`` and smaller ``w2``, so every bound stays a
+    bound) to keep the integers short -- the ball route; ``None``: exact.
+    """
+    e_col, e_scale = _integer_column(e, n, bits, True)
+    constant = isinstance(w2, flint.fmpq)
+    if constant:
+        if w2 <= 0:
+            return None
+        w_col, factor = None, e_scale / w2
+    else:
+        w_col, w_scale = _integer_column(w2, n, bits, False)
+        factor = e_scale / w_scale
+    return _bisection(e_col, w_col, n, factor, _fmpq(mpq(1) + mpq(rel)), max_leaves,
+                      None if target2 is None else _fmpq(target2))
+
+
+def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
+    """:func:`ratio_max_bound` on integer columns: the true ``e_i / w_i`` of a leaf at depth ``k``
+    is ``e_col_i / w_col_i * factor`` (``w_col = None``: ``w_i = 2^(n k)``, a constant ``w2``)."""
+    halve = _halving_matrix(n)
+    zero = flint.fmpq(0)
+    lower = zero
+    heap: list = []
+    counter = 0
+
+    def push(ce, cw, depth):
+        nonlocal counter, lower
+        if cw is None:
+            w_low = w_first = w_last = flint.fmpz(1) << (n * depth)
+        else:
+            w_low, w_first, w_last = min(cw), cw[0], cw[-1]
+        for a, b in ((ce[0], w_first), (ce[-1], w_last)):  # end coefficients: values at the ends
+            if b > 0:
+                value = flint.fmpq(a, b) * factor
+                lower = max(lower, value)
+        if w_low > 0:
+            top = max(ce)
+            bound = flint.fmpq(top, w_low) * factor if top > 0 else zero
+            key = (1, -bound)
+        else:
+            bound, key = None, (0, zero)
+        heapq.heappush(heap, (key, counter, depth, ce, cw, bound))
+        counter += 1
+
+    push(e_col, w_col, 0)
+    size = n + 1
+    while True:
+        _, _, depth, ce, cw, bound = heap[0]
+        if bound is not None and (len(heap) >= max_leaves or bound <= lower * one_rel or bound == 0):
+            break
+        if bound is not None and target2 is not None and (bound <= target2 or lower > target2):
+            break
+        if depth > 60:
+            return None
+        heapq.heappop(heap)
+        if cw is None:
+            out = (halve * flint.fmpz_mat(size, 1, ce)).entries()
+            push(out[:size], None, depth + 1)
+            push(out[size:], None, depth + 1)
+        else:
+            out = (halve * flint.fmpz_mat(size, 2, [x for pair in zip(ce, cw) for x in pair])).entries()
+            push(out[0:2 * size:2], out[1:2 * size:2], depth + 1)
+            push(out[2 * size::2], out[2 * size + 1::2], depth + 1)
+    return from_fmpq(heap[0][5])
 
 
 def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.02, max_leaves: int = 400, target=None,
@@ -154,62 +270,46 @@ def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.
         Stop as soon as the bound is ``<= target`` or a value above ``target`` is found
         (an acceptance test needs no more; the bound is then less tight).
     stats : dict, optional
-        Tally ``{"ball": n, "exact": m}`` of which arithmetic decided: the bisection runs in
-        ball arithmetic first (:func:`exactcagd.composition.ball.ratio_max_bound`), in exact
-        rationals only when the balls do not reach ``target`` (or ``W`` is not bounded away
-        from zero in balls).
+        Tally ``{"ball": n, "exact": m}`` of which arithmetic decided (see
+        :func:`homogeneous_distance_bound`).
 
     Raises
     ------
     WeightError
         The weight function of ``F`` is not bounded away from zero on [0, 1].
     """
-    phi = [mpq(0), mpq(1)] if phi is None else list(to_rational_array(phi, where="phi"))
-    if phi[0] != 0 or phi[-1] != 1 or any(not (0 <= x <= 1) for x in phi):
-        raise InputError("phi must have Bernstein coefficients in [0, 1] starting with 0 and ending with 1")
+    if cubic.is_rational:
+        raise InputError("the approximating cubic must be polynomial")
+    if phi is not None:
+        phi = list(to_rational_array(phi, where="phi"))
+        if phi[0] != 0 or phi[-1] != 1 or any(not (0 <= x <= 1) for x in phi):
+            raise InputError("phi must have Bernstein coefficients in [0, 1] starting with 0 and ending with 1")
     if F.dimension != cubic.dimension:
         raise InputError(f"dimensions differ: {F.dimension} vs {cubic.dimension}")
-    e_scaled, w_scaled, D = _squared_error(F, cubic, phi)
+    identity = phi is None or phi == [mpq(0), mpq(1)]
+    hom_x = cubic.homogeneous() if identity else compose_with_reparametrization(cubic, phi)
+    return homogeneous_distance_bound(F.homogeneous(), hom_x, rel, max_leaves, target, stats)
+
+
+def homogeneous_distance_bound(hom_f: np.ndarray, hom_x: np.ndarray, rel: float = 0.02, max_leaves: int = 400,
+                               target=None, stats: dict | None = None) -> mpq:
+    """:func:`distance_bound` of two curves given by homogeneous Bernstein coefficients (no checks).
+
+    ``hom_f = (W F, W)`` (``W > 0`` on [0, 1]) and ``hom_x = (Xw X, Xw)``, object arrays of
+    rationals.  The bisection of ``max E`` (:func:`ratio_max_bound`) runs first on the
+    coefficients of ``E``'s numerator and denominator rounded outward to
+    :data:`~exactcagd.composition.ball.PREC` significant bits (``"ball"``: a dyadic enclosure of
+    every coefficient, as an Arb ball's ends), and on the exact coefficients only when that
+    does not prove ``target`` or does not bound ``W`` away from zero (``"exact"``).
+    """
+    e, w2, D = _squared_error(hom_f, hom_x)
     target2 = None if target is None else mpq(to_rational_array([target])[0]) ** 2
-    with ball.precision():
-        quick = ball.ratio_max_bound(e_scaled, w_scaled, D, rel, max_leaves, target2)
+    quick = ratio_max_bound(e, w2, D, rel, max_leaves, target2, bits=ball.PREC)
     if quick is not None and (target2 is None or quick <= target2):
         ball.count(stats, ball.BALL)
         return sqrt_upper(quick)
     ball.count(stats, ball.EXACT)
-    e_pow = bz.scaled_to_power(scaled([_round(x, True) for x in unscaled(e_scaled, D)]), D)
-    w_pow = bz.scaled_to_power(scaled([_round(x, False) for x in unscaled(w_scaled, D)]), D)
-    return _exact_bisection(e_pow, w_pow, D, rel, max_leaves, target2)
-
-
-def _exact_bisection(e_pow, w_pow, D: int, rel, max_leaves: int, target2) -> mpq:
-    """The bisection of :func:`distance_bound` in exact rationals (flint ``fmpq``)."""
-    lower = mpq(0)
-    heap: list = []
-    counter = 0
-
-    def push(a, b, depth):
-        nonlocal counter, lower
-        ce, cw = _bernstein_on_fmpq(e_pow, D, a, b), _bernstein_on_fmpq(w_pow, D, a, b)
-        for i in (0, -1):  # end coefficients are the values E(a), W2(a), E(b), W2(b)
-            if cw[i] > 0:
-                lower = max(lower, from_fmpq(ce[i]) / from_fmpq(cw[i]))
-        bound = _leaf_bound(ce, cw)
-        key = (0, 0) if bound is None else (1, -bound)
-        heapq.heappush(heap, (key, counter, depth, a, b, bound))
-        counter += 1
-
-    push(mpq(0), mpq(1), 0)
-    while True:
-        _, _, depth, a, b, bound = heap[0]
-        if bound is not None and (len(heap) >= max_leaves or bound <= lower * mpq(1 + rel) or bound == 0):
-            break
-        if bound is not None and target2 is not None and (bound <= target2 or lower > target2):
-            break
-        if depth > 60:
-            raise WeightError("the weight function of the curve is not bounded away from zero on [0, 1]")
-        heapq.heappop(heap)
-        mid = (a + b) / 2
-        push(a, mid, depth + 1)
-        push(mid, b, depth + 1)
-    return sqrt_upper(heap[0][5])
+    bound = ratio_max_bound(e, w2, D, rel, max_leaves, target2)
+    if bound is None:
+        raise WeightError("the weight function of the curve is not bounded away from zero on [0, 1]")
+    return sqrt_upper(bound)

@@ -13,20 +13,21 @@ Hausdorff distance from above (every ``F(t)`` is within it of ``C(t)`` and conve
    Chebyshev-Lobatto parameters (parametric correspondence ``C(t) ~ F(t)``), end points
    interpolated; ``d = 3, 4, ...`` up to ``max_degree`` (and up to ``deg F`` for a polynomial
    ``F``, where ``d = deg F`` reproduces ``F``), the piece is bisected when no degree works.
+   The sampled errors of all degrees come from one matrix product; the lowest degree whose
+   sampled error is ``<= tol`` (and that certifies) is kept.
 3. **Exact conversion.**  The interior float control points are converted to their exact
    binary values; the end points are the exact joint points ``S(joint)``, shared by the two
    neighbours, so the chain is C0 *exactly*.
-4. **Certificate (ball first, then exact rationals).**  For a polynomial ``F`` the Bernstein coefficients of
-   ``F - C`` (``C`` elevated to ``deg F``) bound ``|F(t) - C(t)|`` by the convex-hull
-   property; for ``F = H / W`` with ``W > 0``, ``(H - W C) / W`` is bounded by the largest
-   coefficient norm of ``H - W C`` over the smallest coefficient of ``W``.  Square roots are
-   rounded upwards.  When this bound exceeds ``tol``, the squared error is bounded by exact
-   bisection (:func:`exactcagd.composition.distance_bound.distance_bound`, which also handles
-   weights whose coefficients are not all positive).  The convex-hull bound is evaluated
-   first in ball arithmetic (python-flint ``arb``, :mod:`exactcagd.composition.ball`): when
-   the ball's upper end is below ``tol`` it is the proof; otherwise the exact route decides
-   (the result's ``certified_by`` counts both).  Samples only *select* candidates; the
-   accepted bound is always one of these proofs.
+4. **Certificate (ball first, then exact rationals).**  The squared error
+   ``E = |F - C|^2`` (for ``F = H / W``: ``|H - W C|^2 / W^2``) is bounded by the
+   convex-hull property of its Bernstein coefficients, refined by bisection where the
+   bound on [0, 1] exceeds ``tol^2``
+   (:func:`exactcagd.composition.distance_bound.homogeneous_distance_bound`): exact integer
+   subdivision of the coefficients rounded outward to
+   :data:`~exactcagd.composition.ball.PREC` bits (``"ball"``), or of the exact ones when that
+   does not prove ``tol`` (``"exact"``; the result's ``certified_by`` counts both).  The
+   square root is rounded upwards.  Samples only *select* candidates; the accepted bound
+   is always such a proof.
 
 Irrational knot-line crossings are carried by isolating intervals of width ``2^-64``
 (:mod:`.domain`): the tiny image arcs between two pieces are covered by the joint bound of
@@ -49,7 +50,7 @@ from gmpy2 import mpq
 
 from ..composition import ball
 from ..composition.cubic_approx import bernstein_basis_float
-from ..composition.distance_bound import distance_bound, sqrt_upper
+from ..composition.distance_bound import homogeneous_distance_bound, sqrt_upper
 from ..composition.fast import compose_homogeneous_fast
 from ..errors import ExactCAGDError, WeightError
 from ..exact import bernstein as bz
@@ -80,8 +81,8 @@ def sample_parameters() -> tuple[np.ndarray, np.ndarray]:
     return fit, (fit[:-1] + fit[1:]) / 2
 
 
-def _float_points(hom: np.ndarray, t: np.ndarray) -> np.ndarray:
-    h = bernstein_basis_float(hom.shape[0] - 1, t) @ hom
+def _homogeneous_points(h: np.ndarray) -> np.ndarray:
+    """Affine points of homogeneous float rows ``(w P, w)``."""
     return h[:, :-1] / h[:, -1:]
 
 
@@ -106,11 +107,6 @@ def _least_squares(d: int, params: np.ndarray, target: np.ndarray, p0: np.ndarra
     return np.vstack([p0, pinv @ rhs, p1])
 
 
-def _exact(x: float) -> mpq:
-    """The exact binary value of a float (no rounding; independent of the float policy)."""
-    return mpq(*float(x).as_integer_ratio())
-
-
 # ----------------------------------------------------------------------------- certificate
 def _max_norm_sq(rows) -> mpq:
     return max(sum(x * x for x in row) for row in rows)
@@ -131,53 +127,28 @@ def _hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
     return sqrt_upper(_max_norm_sq(num)) / low
 
 
-def _ball_hull_bound(hom: np.ndarray, ctrl: np.ndarray) -> mpq | None:
-    """:func:`_hull_bound` in ball arithmetic: a rational bound, ``None`` when undecided
-    (weights not all positive, or a ball reaching 0 where the exact bound may be 0).
-
-    The same convex-hull formula evaluated on ``arb`` balls that contain the exact
-    coefficients (:mod:`exactcagd.composition.ball`); the upper end of the resulting ball
-    bounds the exact hull bound, so it bounds ``max |F - C|`` as well.
-    """
-    weights = hom[:, -1]
-    with ball.precision():
-        rows, kind = ball.bernstein_difference(hom, ctrl)
-        value = ball.max_norm_upper(rows)
-        if kind == 1:
-            low = min(weights)
-            if low <= 0:
-                return None
-            value = value / ball.to_arb(low)
-        if not value > 0:
-            return None  # F = C may hold exactly: the exact route then proves the bound 0
-        return ball.upper_rational(value)
+def _homogeneous(ctrl: np.ndarray) -> np.ndarray:
+    """``(C, 1)``: the polynomial control points with a unit weight column."""
+    return np.concatenate([ctrl, np.full((ctrl.shape[0], 1), mpq(1), dtype=object)], axis=1)
 
 
 def certify(hom: np.ndarray, ctrl: np.ndarray, target=None) -> tuple[mpq, str]:
     """``(r, decided_by)``: :func:`certified_bound` and which arithmetic proved it.
 
-    With a ``target``, the convex-hull bound is first evaluated in ball arithmetic; when its
-    upper end is ``<= target`` that proves the certificate (``decided_by = "ball"``);
-    otherwise the bisection of :func:`~exactcagd.composition.distance_bound.distance_bound`
-    decides, itself in balls first and in exact rationals only if they are inconclusive
-    (``"exact"``).  Without a target: the exact hull bound, or (weights not all positive)
-    the bisection.
+    With a ``target``: the bisection of the squared error
+    (:func:`~exactcagd.composition.distance_bound.homogeneous_distance_bound`), on
+    coefficients rounded outward first (``decided_by = "ball"``) and on the exact ones only
+    when that does not prove ``target`` (``"exact"``); its first leaf is the convex-hull
+    bound of the squared error on [0, 1], so no separate hull test is needed.  Without a
+    target: the exact hull bound, or (weights not all positive) the bisection.
     """
+    stats: dict = {}
     if target is None:
-        stats: dict = {}
         hull = _hull_bound(hom, ctrl)
         if hull is not None:
             return hull, ball.EXACT
-        bound = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), stats=stats)
-        return bound, (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
-    hull = _ball_hull_bound(hom, ctrl)
-    if hull is None:
-        return certified_bound(hom, ctrl, target), ball.EXACT
-    if hull <= target:
-        return hull, ball.BALL
-    stats = {}
-    refined = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), target=target, stats=stats)
-    return min(hull, refined), (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
+    bound = homogeneous_distance_bound(hom, _homogeneous(ctrl), target=target, stats=stats)
+    return bound, (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
 
 
 def certified_bound(hom: np.ndarray, ctrl: np.ndarray, target=None) -> mpq:
@@ -202,28 +173,78 @@ def certified_bound(hom: np.ndarray, ctrl: np.ndarray, target=None) -> mpq:
     bound = _hull_bound(hom, ctrl)
     if bound is not None and (target is None or bound <= target):
         return bound
-    refined = distance_bound(BezierCurve.from_homogeneous(hom), BezierCurve(ctrl), target=target)
+    refined = homogeneous_distance_bound(hom, _homogeneous(ctrl), target=target)
     return refined if bound is None else min(bound, refined)
 
 
 # ----------------------------------------------------------------------------- one piece
-def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
-    """``(ctrl, bound, decided_by)`` of the lowest degree that certifies ``<= tol``, or ``None``."""
-    fl = np.vectorize(float, otypes=[float])(hom)
+@lru_cache(maxsize=16)
+def _samples() -> tuple:
+    """``(fit, check, fit bytes, check bytes)``: :func:`sample_parameters`, computed once."""
     s_fit, s_check = sample_parameters()
-    target_fit, target_check = _float_points(fl, s_fit), _float_points(fl, s_check)
-    f0, f1 = np.array([float(x) for x in p0]), np.array([float(x) for x in p1])
+    return s_fit, s_check, s_fit.tobytes(), s_check.tobytes()
+
+
+@lru_cache(maxsize=16)
+def _prediction_operator(lo: int, hi: int) -> np.ndarray:
+    """Stacked linear maps, degrees ``lo..hi``: ``[T; p0; p1]`` (fit targets, fixed ends) to the
+    values of the degree-``d`` least-squares fit (:func:`_least_squares`) at the fit and
+    check parameters, ``(hi - lo + 1) * (2 NODES - 1)`` rows.  One product then gives the
+    sampled residuals of every degree (selection only, never a bound)."""
+    s_fit, _, fit_bytes, check_bytes = _samples()
+    m = s_fit.size
+    blocks = []
+    for d in range(lo, hi + 1):
+        fit_of = np.zeros((d + 1, m + 2))  # control points as a linear map of [T; p0; p1]
+        fit_of[0, m], fit_of[d, m + 1] = 1.0, 1.0
+        if d >= 2:
+            basis, pinv = _basis(d, fit_bytes)
+            fit_of[1:d, :m] = pinv
+            fit_of[1:d, m] = -pinv @ basis[:, 0]
+            fit_of[1:d, m + 1] = -pinv @ basis[:, -1]
+        blocks.append(np.vstack([_basis(d, fit_bytes)[0], _basis(d, check_bytes)[0]]) @ fit_of)
+    out = np.vstack(blocks)
+    out.flags.writeable = False
+    return out
+
+
+def _sampled_error(d: int, fctrl: np.ndarray, target_fit: np.ndarray, target_check: np.ndarray) -> float:
+    """Largest distance of the fit to ``F`` at the fit and check parameters (selection only)."""
+    _, _, fit_bytes, check_bytes = _samples()
+    return max(np.linalg.norm(_basis(d, b)[0].dot(fctrl) - t, axis=1).max()
+               for b, t in ((fit_bytes, target_fit), (check_bytes, target_check)))
+
+
+def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
+    """``(ctrl, bound, decided_by)`` of the lowest degree that certifies ``<= tol``, or ``None``.
+
+    The sampled errors of all degrees come from one product (:func:`_prediction_operator`);
+    a degree whose error there is clearly above ``tol`` is skipped, the others are fitted and
+    re-measured one by one exactly as before, so the selected degree is the same.
+    """
+    s_fit, _, fit_bytes, check_bytes = _samples()
     n = hom.shape[0] - 1
+    fl = np.array([[float(x) for x in row] for row in hom.tolist()])
+    target_fit, target_check = (_homogeneous_points(_basis(n, b)[0] @ fl) for b in (fit_bytes, check_bytes))
+    f0, f1 = np.array([float(x) for x in p0]), np.array([float(x) for x in p1])
     polynomial = all(x == hom[0, -1] for x in hom[:, -1])
     top = min(max_degree, n) if polynomial else max_degree
-    for d in range(max(1, min(3, top)), top + 1):
+    lo = max(1, min(3, top))
+    tol_f = to_float(tol)
+    rows = 2 * s_fit.size - 1
+    predicted = _prediction_operator(lo, top) @ np.vstack([target_fit, f0, f1])
+    residual = predicted.reshape(top - lo + 1, rows, -1) - np.vstack([target_fit, target_check])
+    quick = np.linalg.norm(residual, axis=2).max(axis=1)
+    # the two float evaluations differ by rounding only (~1e-16 cond |F|): skip what is clearly above
+    skip_above = tol_f * (1 + 2**-20) + 2**-30 * float(np.abs(target_fit).max())
+    for d, approx in zip(range(lo, top + 1), quick):
+        if approx > skip_above:
+            continue
         fctrl = _least_squares(d, s_fit, target_fit, f0, f1)
-        err = max(np.linalg.norm(_basis(d, s.tobytes())[0].dot(fctrl) - t, axis=1).max()
-                  for s, t in ((s_fit, target_fit), (s_check, target_check)))
-        if not err <= to_float(tol):  # (also rejects NaN; a tol beyond the float range is inf)
+        if not _sampled_error(d, fctrl, target_fit, target_check) <= tol_f:  # (also rejects NaN; inf tol passes)
             continue
         ctrl = np.empty(fctrl.shape, dtype=object)
-        ctrl[1:-1] = np.vectorize(_exact, otypes=[object])(fctrl[1:-1])
+        ctrl[1:-1] = [[mpq(x) for x in row] for row in fctrl[1:-1].tolist()]  # exact binary values
         ctrl[0], ctrl[-1] = list(p0), list(p1)
         try:
             bound, decided_by = certify(hom, ctrl, target=tol)
