@@ -56,7 +56,6 @@ from ..errors import ExactCAGDError, WeightError
 from ..exact import bernstein as bz
 from ..exact.scalars import to_float, to_rational
 from ..geometry.bezier_curve import BezierCurve
-from .field_curve import make_curve
 
 __all__ = ["fit_curve", "certify", "certified_bound", "approximate_fit", "sample_parameters", "MAX_DEGREE"]
 
@@ -311,6 +310,16 @@ def _surface_point(grid, key, point) -> tuple:
     return tuple(h[:-1] / h[-1])
 
 
+def _joint_image(grid, key, joint, domain_row, image_row) -> tuple:
+    """Exact ``S(joint.point)``: the composed piece's end row ``image_row`` when the piece's
+    domain end ``domain_row`` (homogeneous) is the joint's point itself (an exact joint; the
+    composition is exact, so its end is ``S`` there), else :func:`_surface_point`."""
+    w = domain_row[2]
+    if joint.exact and (domain_row[0] / w, domain_row[1] / w) == tuple(joint.point):
+        return tuple(image_row[:-1] / image_row[-1])
+    return _surface_point(grid, key, joint.point)
+
+
 def _pieces(joints):
     """Consecutive kept joints ``(ja, jb)``: each pair bounds one exact image piece."""
     kept = [j for j in joints if _KEEP.intersection(j.reasons)]
@@ -333,20 +342,22 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
         _, tb = jb.lo
         key = grid.locate(*dcurve.point(k, (ta + tb) / 2))
         (ua, ub), (va, vb) = grid.spans(key)
-        glob = dcurve.restricted(k, ta, tb)
-        local = glob.copy()
-        local[:, 0] = (glob[:, 0] - ua * glob[:, 2]) / (ub - ua)
-        local[:, 1] = (glob[:, 1] - va * glob[:, 2]) / (vb - va)
+        glob = dcurve.homs[k] if (ta, tb) == (0, 1) else dcurve.restricted(k, ta, tb)
+        local = glob
+        if (ua, ub, va, vb) != (0, 1, 0, 1):  # global (u, v) -> the patch's local [0, 1]^2
+            local = glob.copy()
+            local[:, 0] = (glob[:, 0] - ua * glob[:, 2]) / (ub - ua)
+            local[:, 1] = (glob[:, 1] - va * glob[:, 2]) / (vb - va)
         hom = compose_homogeneous_fast(grid.patch_hom(key), local)
-        for j in (ja, jb):
+        for j, row in ((ja, 0), (jb, -1)):
             if id(j) not in cache:  # one exact point per joint, shared by both neighbours
-                cache[id(j)] = _surface_point(grid, key, j.point)
+                cache[id(j)] = _joint_image(grid, key, j, glob[row], hom[row])
         p0, p1 = cache[id(ja)], cache[id(jb)]
         for (a, b), ctrl, bound in fit_curve(hom, tol, p0, p1, max_degree, max_segments, stats):
             segments.append(ctrl)
             bounds.append(bound)
             patches.append(key)
-            domains.append(make_curve(bz.restrict(glob, a, b)))
+            domains.append(BezierCurve.from_homogeneous(glob if (a, b) == (0, 1) else bz.restrict(glob, a, b)))
             params.append({"piece": k, "interval": [str(ta + (tb - ta) * a), str(ta + (tb - ta) * b)],
                            "fit_degree": ctrl.shape[0] - 1})
             span0, span1 = dcurve.spans[k]
@@ -357,7 +368,8 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
                 raise ExactCAGDError(f"more than max_segments = {max_segments} segments needed")
     t_fit = time.perf_counter()
     degree = max(c.shape[0] - 1 for c in segments)
-    curves = [BezierCurve(bz.elevate(c, degree - (c.shape[0] - 1))) for c in segments]
+    # exact mpq control points built here (validated by construction): no re-validation
+    curves = [BezierCurve._trusted(bz.elevate(c, degree - (c.shape[0] - 1)), None) for c in segments]
     bound = max(max(bounds), _gap_bound(grid, dcurve, joints))
     pairs = list(zip(curves[:-1], curves[1:])) + ([(curves[-1], curves[0])] if dcurve.closed and len(curves) > 1 else [])
     angles = [_angle_deg(_tangent(a, 1), _tangent(b, 0)) for a, b in pairs]
