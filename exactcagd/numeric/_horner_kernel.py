@@ -89,13 +89,13 @@ def _horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, val
     a = np.empty(BLOCK)
     a_j = np.empty(BLOCK)
     low = np.empty(BLOCK, dtype=np.bool_)
-    h = np.empty(BLOCK)
-    e = np.empty(BLOCK)
     w = np.empty(BLOCK)
     e_w = np.empty(BLOCK)
     w_low = np.empty(BLOCK)
     count = t.shape[0]
     dim = values.shape[1]
+    h = np.empty((dim, BLOCK))  # values of the block, one row per coordinate
+    e = np.empty((dim, BLOCK))  # their radii
     for start in range(0, count, BLOCK):
         m = min(BLOCK, count - start)
         any_tiny = False
@@ -127,14 +127,12 @@ def _horner_curve(c, c_abs_sum, t, g, eta, min_normal, u_quotient, rational, val
                     w_low[i] = _down_positive(abs(w[i]) - e_w[i])
         for j in range(dim):
             _coordinate(c, c_abs_sum, j, n, first_steps, x, low, scale, a, a_j, any_tiny, tiny_factor, min_normal,
-                        g, bound, h, e, m)
+                        g, bound, h[j], e[j], m)
             if rational:
-                _divide(h, e, w, e_w, w_low, u_quotient, eta, bound, m)
-            for i in range(m):
-                values[start + i, j] = h[i]
-            if bound:
-                for i in range(m):
-                    radii[start + i, j] = e[i]
+                _divide(h[j], e[j], w, e_w, w_low, u_quotient, eta, bound, m)
+        _store(values, h, start, m)
+        if bound:
+            _store(radii, e, start, m)
     return True
 
 
@@ -215,6 +213,33 @@ def _four_steps(c, j, n, k, x, low, h, h_abs, m):
         h[i], h_abs[i] = _step(v, u, xi, is_low, e4, f4)
 
 
+def _store(out, block, start, m):
+    """``out[start + i, j] = block[j, i]`` for the block's ``m`` parameters (``out`` is C-ordered).
+
+    With 1, 2 or 3 coordinates the row length is a constant of the loop, so the compiler
+    interleaves whole vectors of coordinates (one loop per coordinate writes with a
+    stride of ``d`` floats, one float at a time).
+    """
+    dim = out.shape[1]
+    flat = out.reshape(-1)
+    if dim == 1:
+        for i in range(m):
+            flat[start + i] = block[0, i]
+    elif dim == 2:
+        for i in range(m):
+            flat[2 * (start + i)] = block[0, i]
+            flat[2 * (start + i) + 1] = block[1, i]
+    elif dim == 3:
+        for i in range(m):
+            flat[3 * (start + i)] = block[0, i]
+            flat[3 * (start + i) + 1] = block[1, i]
+            flat[3 * (start + i) + 2] = block[2, i]
+    else:
+        for i in range(m):
+            for j in range(dim):
+                out[start + i, j] = block[j, i]
+
+
 def _divide(x, e_x, w, e_w, w_low, u_quotient, eta, bound, m):
     """``x = x / w`` and ``e_x`` its certified radius, in place, as numpy's ``_project``::
 
@@ -244,7 +269,7 @@ def _divide(x, e_x, w, e_w, w_low, u_quotient, eta, bound, m):
 _COMPILED: dict = {}
 #: helpers of the kernel: compiled (inlined into it) before it and put in their place in
 #: this module's namespace, where numba resolves the kernel's calls
-_HELPERS = ("_up", "_down_positive", "_step", "_coordinate", "_first_pass", "_four_steps", "_divide")
+_HELPERS = ("_up", "_down_positive", "_step", "_coordinate", "_first_pass", "_four_steps", "_divide", "_store")
 
 
 def _compiled(func):
