@@ -16,8 +16,9 @@ polynomial curves (constant weights) ``E = |F - X o phi|^2`` directly, of degree
 
 a bound on the Hausdorff distance of the two curve segments (every ``F(t)`` is within it of
 ``X(phi(t))`` on ``X``, and every ``X(s)`` is ``X(phi(t))`` for some ``t``).  ``max E`` is bounded
-by the convex-hull property: on every sub-interval, (max Bernstein coefficient of the
-numerator) / (min Bernstein coefficient of ``W^2``), refined by bisection of [0, 1]
+by the convex-hull property: on every sub-interval, by the largest ratio of a Bernstein
+coefficient of the numerator to the corresponding one of ``W^2`` (all of which must be
+positive; :func:`_largest_ratio`), refined by bisection of [0, 1]
 until the bound is within a factor ``1 + rel`` of the values at the subdivision points.
 The Bernstein coefficients of a half interval come from those of the parent by de
 Casteljau at ``1/2``, which times ``2^D`` is an integer matrix (:func:`_halving_matrix`):
@@ -177,8 +178,8 @@ def ratio_max_bound(e: flint.fmpq_poly, w2, n: int, rel, max_leaves: int, target
     """An exact rational ``>= max_[0,1] e / w2`` by bisection, or ``None`` (``w2`` not bounded below).
 
     ``e`` and ``w2`` are scaled Bernstein forms of degree ``n`` (``w2`` may be a positive
-    constant ``fmpq``).  On a leaf the bound is ``max_i e_i / min_i w_i`` of its Bernstein
-    coefficients (convex-hull property); the leaf with the largest bound is halved (exact
+    constant ``fmpq``).  On a leaf the bound is ``max_i e_i / w_i`` of its Bernstein
+    coefficients (convex-hull property, :func:`_largest_ratio`); the leaf with the largest bound is halved (exact
     integer de Casteljau, :func:`_halving_matrix`) until the bound is within ``1 + rel`` of the
     largest end value ``e / w2`` seen, is ``<= target2``, an end value exceeds ``target2``, or
     ``max_leaves`` leaves exist.  ``bits``: round the coefficients on [0, 1] outward first
@@ -196,6 +197,25 @@ def ratio_max_bound(e: flint.fmpq_poly, w2, n: int, rel, max_leaves: int, target
         factor = e_scale / w_scale
     return _bisection(e_col, w_col, n, factor, _fmpq(mpq(1) + mpq(rel)), max_leaves,
                       None if target2 is None else _fmpq(target2))
+
+
+def _largest_ratio(e: list, w: list | None, w_low) -> flint.fmpq:
+    """``max(0, max_i e_i / w_i)`` (all ``w_i > 0``; ``w = None``: every ``w_i = w_low``).
+
+    It bounds ``sum e_i B_i / sum w_i B_i`` on the leaf (a weighted mean of the ratios, the
+    weights ``w_i B_i >= 0``: the rational convex-hull property), and is never larger than
+    ``max e / min w``; its excess over the true maximum shrinks like ``h^2`` with the leaf
+    width ``h`` (``max e / min w``: like ``h``, through the variation of ``w`` on the leaf).
+    Compared by cross-multiplication (exact integers).
+    """
+    if w is None:
+        top = max(e)
+        return flint.fmpq(top, w_low) if top > 0 else flint.fmpq(0)
+    best_e, best_w = 0, 1
+    for a, b in zip(e, w):
+        if a * best_w > best_e * b:
+            best_e, best_w = a, b
+    return flint.fmpq(best_e, best_w)
 
 
 def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
@@ -218,8 +238,7 @@ def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
                 value = flint.fmpq(a, b) * factor
                 lower = max(lower, value)
         if w_low > 0:
-            top = max(ce)
-            bound = flint.fmpq(top, w_low) * factor if top > 0 else zero
+            bound = _largest_ratio(ce, cw, w_low) * factor
             key = (1, -bound)
         else:
             bound, key = None, (0, zero)
