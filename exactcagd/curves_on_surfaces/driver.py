@@ -33,7 +33,7 @@ from ..exact.scalars import rational_str, to_count, to_float, to_rational
 from . import approximants as ap
 from .domain import DomainCurve, Joint, positively_parallel
 from .field_curve import _end_derivative, make_curve
-from .hausdorff import hausdorff_bound, sqrt_upper
+from .hausdorff import hausdorff_certificate, may_attain, sqrt_upper
 from .surface_grid import SurfaceGrid
 
 __all__ = ["approximate", "CurveOnSurface", "METHODS"]
@@ -52,6 +52,7 @@ class _Item:
     approx: ap.Approximant | None = None
     bound: mpq | None = None
     tangents: tuple | None = None
+    certificate: tuple | None = None  # (L, Certified, delta): bound = L (value + delta), refined on demand
 
     @property
     def piece(self) -> int:
@@ -229,10 +230,10 @@ class _Solver:
         limit = self.tol / L - delta
         if limit <= 0:
             return False
-        hb = hausdorff_bound(c1, proxy.domain_hom(), limit, stats=self.certified_by)
+        hb = hausdorff_certificate(c1, proxy.domain_hom(), limit, stats=self.certified_by)
         if hb is None:
             return False
-        item.approx, item.bound = approx, L * (hb + delta)
+        item.approx, item.bound, item.certificate = approx, L * (hb.upper + delta), (L, hb, delta)
         return True
 
     # ------------------------------------------------------------------ joint data
@@ -499,7 +500,7 @@ def approximate(
     segments = [make_curve(bz.elevate(h, degree - (h.shape[0] - 1))) for h in images]
     t_img = time.perf_counter()
 
-    bound = max(it.bound for it in done)
+    bound = _largest_bound(done)
     bound = max(bound, _gap_bound(grid, dcurve, joints))
     angles = []
     g1 = None
@@ -550,6 +551,20 @@ def approximate(
         ends=ends,
         certified_by=solver.certified_by,
     )
+
+
+def _largest_bound(done: list) -> mpq:
+    """``max L (H + delta)`` over the pieces, with each ``H`` the value of its certificate:
+    only the pieces whose upper bound may attain the maximum are refined."""
+    lowers = [it.bound if it.certificate is None else it.certificate[0] * (it.certificate[1].lower + it.certificate[2]) for it in done]
+    top = max(lowers)
+    best = mpq(0)
+    for it in done:
+        if it.certificate is not None and may_attain(it.bound, top):
+            L, hb, delta = it.certificate
+            it.bound = L * (hb.value() + delta)
+        best = max(best, it.bound)
+    return best
 
 
 def _end_info(dcurve: DomainCurve, joint: Joint, side: str) -> tuple:

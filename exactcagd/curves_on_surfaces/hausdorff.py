@@ -51,7 +51,7 @@ from ..exact import bernstein as bz
 from ..exact.quadratic import QuadraticNumber
 from ..exact.scalars import to_float, to_rational
 
-__all__ = ["hausdorff_bound", "piece_bound", "directed_piece_bound", "ball_piece_bound", "ball_directed_bound", "sqrt_upper", "upper", "float_hausdorff"]
+__all__ = ["hausdorff_bound", "hausdorff_certificate", "Certified", "may_attain", "piece_bound", "directed_piece_bound", "ball_piece_bound", "ball_directed_bound", "sqrt_upper", "upper", "float_hausdorff"]
 
 
 def upper(x) -> mpq:
@@ -286,6 +286,12 @@ def ball_piece_bound(rows_a: list, rows_b: list) -> mpq | None:
     root of a ball around 0 costs ``sqrt(radius)``, and an exact zero bound (an iso-curve,
     reproduced exactly) should stay 0.
     """
+    value = _ball_piece_value(rows_a, rows_b)
+    return None if value is None else ball.upper_rational(value)
+
+
+def _ball_piece_value(rows_a: list, rows_b: list) -> flint.arb | None:
+    """The ball of :func:`ball_piece_bound` (it contains the exact formula value), or ``None``."""
     pa, pb = _ball_points(rows_a), _ball_points(rows_b)
     best = flint.arb(0)
     for x, y in ((pa, pb), (pb, pa)):
@@ -295,14 +301,204 @@ def ball_piece_bound(rows_a: list, rows_b: list) -> mpq | None:
         a_part, delta = parts
         # squared distances are >= 0: their balls may reach below 0, sqrt takes the part >= 0
         best = best.max(a_part.nonnegative_part().sqrt() + delta.nonnegative_part().sqrt())
-    if not best > 0:
+    if not best > 0 or not best.is_finite():
         return None  # the exact bound may be 0 (e.g. an exact iso-curve): exact rationals give it exactly
-    return ball.upper_rational(best)
+    return best
+
+
+# ---------------------------------------------------------------------- binary64 enclosures
+# The piece bound of many pieces at once, in binary64 interval arithmetic.  An interval is
+# an array ``X`` of shape ``(2, ...)`` holding ``(-lo, hi)``: both ends are then rounded
+# outward by one ``nextafter(., +inf)`` (the rounding error of ``+ - * /`` and ``sqrt``
+# is at most half the spacing at the result, Sederberg's notes (13.4)-(13.5), so the next
+# float up bounds the exact result; ``-lo`` rounded up is ``lo`` rounded down).  Like an
+# ``arb`` ball, the interval decides only when the threshold lies outside it; otherwise
+# the ball route and then exact rationals decide.
+
+#: Unit roundoff of binary64 (round to nearest).
+_U = 2.0**-53
+#: Absolute radius covering underflow (each product's error ``<= 2^-1075``, Sederberg (13.4)).
+_FLOAT_ABS = 2.0**-1000
+_FLOAT_MAX_DEGREE = 1000
+_DYADIC_FLOAT = 2**53
+_SIGNS = np.array([[1.0, -1.0], [-1.0, 1.0]])
+_NEG = np.array([-1.0, 1.0])
+
+
+def _up(x):
+    return np.nextafter(x, np.inf)
+
+
+def _col(sign, ndim):
+    return sign.reshape(sign.shape + (1,) * ndim)
+
+
+def _iadd(a, b):
+    return _up(a + b)
+
+
+def _isub(a, b):
+    return _up(a + b[::-1])  # -lo = -lo_a + hi_b, hi = hi_a - lo_b
+
+
+def _pair(neg_lo, hi):
+    """``(-lo, hi)`` rounded outward."""
+    out = np.empty((2,) + np.shape(hi))
+    out[0] = neg_lo
+    out[1] = hi
+    return _up(out)
+
+
+def _imul(a, b):
+    # the four products lo_a lo_b, lo_a hi_b, hi_a lo_b, hi_a hi_b
+    q = (a[:, None] * b[None, :]) * _col(_SIGNS, a.ndim - 1)
+    q = q.reshape((4,) + q.shape[2:])
+    return _pair(-q.min(axis=0), q.max(axis=0))
+
+
+def _isqr(a):
+    sq = a * a  # lo^2, hi^2
+    small = np.where(a[0] <= 0, sq[0], np.where(a[1] <= 0, sq[1], 0.0))  # lo >= 0 / hi <= 0 / 0 inside
+    return _pair(-small, np.maximum(sq[0], sq[1]))
+
+
+def _idiv_pos(a, b):
+    """``a / b`` for ``b`` with a positive lower end (the caller masks the other entries)."""
+    ends = b * _col(_NEG, b.ndim - 1)  # lo_b, hi_b
+    return _up((a[:, None] / ends[None, :]).max(axis=1))
+
+
+def _isqrt(a):
+    sign = _col(_NEG, a.ndim - 1)
+    return _up(np.sqrt(np.maximum(a * sign, 0.0)) * sign)
+
+
+def _icoords(a):
+    """Sum over the last axis (two coordinates)."""
+    return _up(a[..., 0] + a[..., 1])
+
+
+def _float_net(hom, hf: np.ndarray | None = None) -> np.ndarray | None:
+    """``(values, |values|)`` of a rational homogeneous array in binary64, ``None`` if an entry is
+    not rational, the curve is not planar or of too high a degree, or a value is not finite."""
+    if hom.shape[1] != 3 or hom.shape[0] - 1 > _FLOAT_MAX_DEGREE:
+        return None
+    if not all(isinstance(x, (type(mpq(0)), int)) for x in hom.flat):
+        return None
+    mid = _float_hom(hom) if hf is None else hf  # each entry within one ulp of the exact value
+    if not np.isfinite(mid).all():
+        return None
+    return np.stack([mid, np.abs(mid)])
+
+
+def _float_ends(values) -> np.ndarray | None:
+    """Parameters as binary64 numbers with ``1 - t`` exact (dyadic, denominator ``<= 2^53``),
+    or ``None`` if one is not."""
+    for q in values:
+        d = mpq(q).denominator
+        if d > _DYADIC_FLOAT or d & (d - 1):
+            return None
+    return np.array([float(q) for q in values])
+
+
+def _float_restrict(net: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Intervals of the control points of ``N`` restrictions ``[a_k, b_k]`` of a Bézier net.
+
+    Restricted point ``i`` is the blossom ``b(a, .., a, b, .., b)`` (``n - i`` times ``a``):
+    ``n`` de Casteljau levels, level ``r`` at ``a`` for ``r < n - i`` and at ``b`` otherwise,
+    all of them at once.  With ``a, b`` binary64 numbers for which ``1 - a``, ``1 - b`` are
+    exact, every level is ``fl(fl((1 - t) x) + fl(t y))`` with non-negative weights, so
+    (Higham, Lemma 3.1, one more factor for the conversion of the input, within one ulp)
+    ``|computed - exact| <= gamma_{2n+2} sum_j M_ij |x_j|``, where ``M_ij >= 0`` are the
+    blossom weights; the same recursion on ``|x|`` computes that sum ``A`` up to a factor
+    ``(1 + theta_2n)`` and the conversion's ``(1 - 2u)``.  For ``n <= 1000``,
+    ``gamma_{2n+2} / ((1 - gamma_{2n}) (1 - 2u)) < 1.00001 (2n + 2) u``: the radius
+    ``(4n + 4) u A`` holds it with a factor 2 to spare, which also covers the rounding of
+    the radius itself.  Returns ``(-lo, hi)`` of shape ``(2, N, n + 1, 3)``.
+    """
+    n = net.shape[1] - 1
+    N = len(a)
+    i = np.arange(n + 1)
+    level = np.broadcast_to(net[:, None, None], (2, N, n + 1, n + 1, net.shape[-1]))
+    for r in range(n):
+        t = np.where(r < n - i, a[:, None], b[:, None])[None, :, :, None, None]
+        level = (1.0 - t) * level[:, :, :, :-1] + t * level[:, :, :, 1:]
+    mid, size = level[0, :, :, 0], level[1, :, :, 0]
+    rad = _up(size * ((4 * n + 4) * _U) + _FLOAT_ABS)
+    return _pair(rad - mid, mid + rad)
+
+
+def _float_points(net, a, b, count: int):
+    """Intervals of the projected control points, shape ``(2, N, count, 2)`` (the last point
+    repeated up to ``count``), and a mask of the pieces whose weights are positive."""
+    hom = _float_restrict(net, a, b)
+    if hom.shape[2] < count:
+        hom = np.concatenate([hom, np.repeat(hom[:, :, -1:], count - hom.shape[2], axis=2)], axis=2)
+    w = hom[..., 2:]
+    ok = (w[0, ..., 0] < 0).all(axis=1)  # -lo < 0: lo > 0
+    w = np.where(w[0] < 0, w, _col(_NEG, w.ndim - 1))
+    return _idiv_pos(hom[..., :2], w), ok
+
+
+def _float_directed(pa: np.ndarray, pb: np.ndarray):
+    """Interval of ``max_k dist(Q^A_k, [b_0, b_1]) + delta_B`` for piece pairs at once (rows of
+    ``pa``, ``pb``: intervals of shape ``(2, N, points, 2)``), and a mask of the rows where
+    the chord is not degenerate in intervals.
+
+    The distance to the chord's line is taken as ``|cross(q - b_0, e)| / |e|`` (``= |q - b_0|^2
+    - ((q - b_0).e)^2 / |e|^2`` by Lagrange's identity, the exact code's form, with far less
+    cancellation).
+    """
+    b0, b1 = pb[:, :, :1], pb[:, :, -1:]
+    e = _isub(b1, b0)
+    ee = _icoords(_isqr(e))
+    ok = ee[0, :, 0] < 0
+    ee = np.where(ee[0] < 0, ee, _col(_NEG, ee.ndim - 1))
+    ap, bp = _isub(pa, b0), _isub(pa, b1)
+    s = _icoords(_imul(ap, e))
+    near0 = _icoords(_isqr(ap))  # s <= 0: the nearest point is b_0
+    near1 = _icoords(_isqr(bp))  # s >= |e|^2: b_1
+    e_swapped = e[..., ::-1]
+    cross = _imul(ap, e_swapped)  # ap_x e_y, ap_y e_x
+    inner = _idiv_pos(_isqr(_isub(cross[..., :1], cross[..., 1:])[..., 0]), ee)
+    s_lo, s_hi, ee_lo, ee_hi = -s[0], s[1], -ee[0], ee[1]
+    # the exact value is one of the three cases; take the cases the intervals do not exclude
+    m0, m1, m2 = s_lo <= 0, s_hi >= ee_lo, (s_hi > 0) & (s_lo < ee_hi)
+    neg_lo = np.minimum(np.minimum(np.where(m0, near0[0], np.inf), np.where(m1, near1[0], np.inf)), np.where(m2, inner[0], np.inf))
+    hi = np.maximum(np.maximum(np.where(m0, near0[1], -np.inf), np.where(m1, near1[1], -np.inf)), np.where(m2, inner[1], -np.inf))
+    neg_lo, hi = neg_lo.min(axis=1), hi.max(axis=1)
+    a_part = _pair(neg_lo, hi)
+    if pb.shape[2] > 2:
+        cq = _imul(_isub(pb[:, :, 1:-1], b0), e_swapped)
+        d = _idiv_pos(_isqr(_isub(cq[..., :1], cq[..., 1:])[..., 0]), ee)
+        delta = _pair(d[0].min(axis=1), d[1].max(axis=1))
+    else:
+        delta = np.zeros_like(a_part)
+    return _iadd(_isqrt(a_part), _isqrt(delta)), ok
+
+
+def float_piece_bounds(net_a, net_b, ta, tb, sa, sb):
+    """Intervals ``(lo, hi)`` containing the :func:`piece_bound` formula value of the pieces
+    ``A[ta_k, tb_k]``, ``B[sa_k, sb_k]`` (``NaN`` where undecided), all pieces at once.
+
+    ``net_a``, ``net_b`` from :func:`_float_net`, parameters from :func:`_float_ends`.
+    """
+    count = max(net_a.shape[1], net_b.shape[1])
+    with np.errstate(all="ignore"):
+        pa, ok_a = _float_points(net_a, ta, tb, count)
+        pb, ok_b = _float_points(net_b, sa, sb, count)
+        # both directions in one pass: rows A -> B, then B -> A
+        value, ok = _float_directed(np.concatenate([pa, pb], axis=1), np.concatenate([pb, pa], axis=1))
+        N = len(ta)
+        lo = np.maximum(-value[0, :N], -value[0, N:])
+        hi = np.maximum(value[1, :N], value[1, N:])
+        good = ok_a & ok_b & ok[:N] & ok[N:] & np.isfinite(lo) & np.isfinite(hi)
+    return np.where(good, lo, np.nan), np.where(good, hi, np.nan)
 
 
 # ---------------------------------------------------------------------- float helpers
 def _float_hom(hom) -> np.ndarray:
-    return np.vectorize(float, otypes=[float])(hom)
+    return np.array([[float(x) for x in row] for row in hom], dtype=float).reshape(hom.shape)
 
 
 def _eval(hf: np.ndarray, ts) -> np.ndarray:
@@ -318,10 +514,15 @@ def _eval(hf: np.ndarray, ts) -> np.ndarray:
 
 def float_hausdorff(hom_a, hom_b, samples: int = 129) -> float:
     """Float estimate of ``H`` from dense samples (a heuristic, never a certificate)."""
+    return _float_estimate(_float_hom(hom_a), _float_hom(hom_b), samples)
+
+
+def _float_estimate(hf_a: np.ndarray, hf_b: np.ndarray, samples: int) -> float:
     ts = np.linspace(0.0, 1.0, samples)
-    pa, pb = _eval(_float_hom(hom_a), ts), _eval(_float_hom(hom_b), ts)
-    d = np.sqrt(((pa[:, None, :] - pb[None, :, :]) ** 2).sum(-1))
-    return float(max(_seg_dist(pa, pb).max(), _seg_dist(pb, pa).max())) if samples > 1 else float(d.min())
+    pa, pb = _eval(hf_a, ts), _eval(hf_b, ts)
+    if samples <= 1:
+        return float(np.sqrt(((pa[:, None, :] - pb[None, :, :]) ** 2).sum(-1)).min())
+    return float(max(_seg_dist(pa, pb).max(), _seg_dist(pb, pa).max()))
 
 
 def _seg_dist(p: np.ndarray, poly: np.ndarray) -> np.ndarray:
@@ -357,12 +558,56 @@ class _Footer:
                 t += 0.5 * self.h * (a - c) / den
         return float(min(max(t, lo), hi))
 
+    def many(self, points: np.ndarray, los: np.ndarray, his: np.ndarray) -> np.ndarray:
+        """``[self(p, lo, hi) for ...]`` in one pass (the same float operations, the same values)."""
+        count = len(self.ts)
+        i0 = np.floor(los / self.h).astype(np.int64)
+        i1 = np.minimum(np.ceil(his / self.h).astype(np.int64) + 1, count)  # slice ends, clipped
+        d = ((self.pts[None, :, :] - points[:, None, :]) ** 2).sum(-1)
+        index = np.arange(count)
+        inside = (index[None, :] >= i0[:, None]) & (index[None, :] < i1[:, None])
+        j = np.argmin(np.where(inside, d, np.inf), axis=1)
+        t = self.ts[j].copy()
+        rows = np.arange(len(j))
+        interior = (j > i0) & (j < i1 - 1)
+        a = d[rows, np.maximum(j - 1, 0)]
+        b = d[rows, j]
+        c = d[rows, np.minimum(j + 1, count - 1)]
+        den = a - 2 * b + c
+        step = interior & (den > 0)
+        with np.errstate(all="ignore"):
+            t[step] += 0.5 * self.h * (a[step] - c[step]) / den[step]
+        return np.minimum(np.maximum(t, los), his)
+
 
 def _dyadic(x: float, lo: mpq, hi: mpq, bits: int = 40) -> mpq:
     q = mpq(int(round(x * 2**bits)), 2**bits)
     if not (lo < q < hi):
         q = (lo + hi) / 2
     return q
+
+
+class Certified:
+    """A certified bound of ``H(A, B)`` known first as an interval: ``lower <= value() <= upper``.
+
+    ``upper`` is itself a certified upper bound (``<= limit``); :meth:`value` is the bound
+    the piece-by-piece route gives (each piece's ball bound, else its exact one), computed
+    on first use for the pieces that can attain the maximum.  A caller that only needs the
+    largest of many bounds refines only the candidates (:func:`exactcagd.curves_on_surfaces.driver`).
+    """
+
+    __slots__ = ("lower", "upper", "_refine", "_value")
+
+    def __init__(self, lower: mpq, upper: mpq, refine=None):
+        self.lower, self.upper, self._refine, self._value = lower, upper, refine, None
+        if refine is None:
+            self._value = upper
+
+    def value(self) -> mpq:
+        if self._value is None:
+            self._value = self._refine()
+            self._refine = None
+        return self._value
 
 
 def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512, stats: dict | None = None):
@@ -372,13 +617,26 @@ def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512,
     returned at once when the float estimate already exceeds ``limit``.  Each piece bound
     is evaluated in ball arithmetic first and in exact arithmetic only when the ball's
     upper end exceeds ``limit``; ``stats`` (a dict) counts which decided
-    (``{"ball": n, "exact": m}``, :mod:`exactcagd.composition.ball`).
+    (``{"ball": n, "exact": m}``, :mod:`exactcagd.composition.ball`).  "ball" counts every
+    enclosure decision: binary64 intervals for all pieces of a bisection level at once
+    (:func:`float_piece_bounds`), else an ``arb`` ball per piece.
     """
+    cert = hausdorff_certificate(hom_a, hom_b, limit, pieces, max_pieces, stats)
+    return None if cert is None else cert.value()
+
+
+def hausdorff_certificate(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512, stats: dict | None = None):
+    """:func:`hausdorff_bound` as a :class:`Certified` (its value computed on demand), or ``None``."""
+    limit = to_rational(limit, where="limit")
+    hf_a, hf_b = _float_hom(hom_a), _float_hom(hom_b)
+    if _float_estimate(hf_a, hf_b, 33) > to_float(limit) * (1 + 1e-9):
+        return None
     with ball.precision():
-        bound = _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
-        if bound is None:
+        cert = _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats, hf_a, hf_b)
+        if cert is None:
             bound = _unpaired_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
-        return bound
+            cert = None if bound is None else Certified(bound, bound)
+        return cert
 
 
 def _unpaired_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
@@ -390,9 +648,6 @@ def _unpaired_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
     ``h(A_i -> B) <= h(A_i -> W)`` for *any* window ``W`` of ``B``, so every piece of ``A``
     only needs one window of ``B`` (no monotonicity, no covering of ``B``).
     """
-    limit = to_rational(limit, where="limit")
-    if float_hausdorff(hom_a, hom_b, 33) > to_float(limit) * (1 + 1e-9):
-        return None
     first = _directed_bound(hom_a, hom_b, limit, pieces, max_pieces, stats)
     if first is None:
         return None
@@ -466,46 +721,154 @@ def _certify_window(hom_a, hom_b, balls_a, balls_b, piece, windows, limit, stats
     return None
 
 
-def _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats):
-    limit = to_rational(limit, where="limit")
-    hf_a, hf_b = _float_hom(hom_a), _float_hom(hom_b)
-    if float_hausdorff(hom_a, hom_b, 33) > to_float(limit) * (1 + 1e-9):
+def _float_limits(limit: mpq) -> tuple[float, float]:
+    """Binary64 numbers ``lo <= limit <= hi`` (adjacent, or equal when ``limit`` is a float)."""
+    f = float(limit)
+    lo = f if mpq(f) <= limit else float(np.nextafter(f, -np.inf))
+    hi = f if mpq(f) >= limit else float(np.nextafter(f, np.inf))
+    return lo, hi
+
+
+class _PairedPieces:
+    """The per-piece decision of the paired route: ball first, exact rationals if undecided."""
+
+    def __init__(self, hom_a, hom_b, limit):
+        self.hom_a, self.hom_b, self.limit = hom_a, hom_b, limit
+        self._balls = None
+
+    def balls(self):
+        if self._balls is None:
+            self._balls = (_ball_rows(self.hom_a), _ball_rows(self.hom_b))
+        return self._balls
+
+    def bound(self, piece, stats) -> mpq | None:
+        """The piece's bound if it is ``<= limit``, else ``None`` (counted in ``stats``)."""
+        (ta, tb), (sa, sb) = piece
+        balls_a, balls_b = self.balls()
+        if balls_a is not None and balls_b is not None and sa < sb:
+            value = _ball_piece_value(_ball_restrict(balls_a, ta, tb), _ball_restrict(balls_b, sa, sb))
+            if value is not None:
+                quick = ball.upper_rational(value)
+                if quick is not None and quick <= self.limit:
+                    ball.count(stats, ball.BALL)
+                    return quick
+                if value.lower() > self.to_arb_limit():
+                    return None  # the exact bound is >= the exact formula value > limit
+        if sa < sb:
+            piece_b = restrict_fast(self.hom_b, sa, sb)
+        else:
+            piece_b = np.array([bz.de_casteljau(self.hom_b, sa)] * 2, dtype=object)
+        bound = piece_bound(restrict_fast(self.hom_a, ta, tb), piece_b)
+        if bound <= self.limit:
+            ball.count(stats, ball.EXACT)
+            return bound
         return None
+
+    def to_arb_limit(self):
+        return ball.to_arb(self.limit)
+
+
+def _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats, hf_a, hf_b):
+    """The paired route, one bisection level at a time.
+
+    All pieces of a level are first bounded in binary64 intervals (:func:`float_piece_bounds`);
+    a piece whose interval lies below ``limit`` is accepted, one above is bisected, and the
+    others are decided piece by piece (:class:`_PairedPieces`: ball, then exact).  The tree
+    of pieces is the one of a piece-by-piece bisection (each piece's fate and its children
+    depend on the piece alone), so the accepted pieces are the same; the returned bound is
+    the largest of their ball/exact bounds, computed for the pieces that can attain it.
+    """
     foot = _Footer(hf_b)
-
-    def hom_b_at(t):
-        return bz.de_casteljau(hom_b, t)
-
     ts = [mpq(i, pieces) for i in range(pieces + 1)]
     taus = [mpq(0)]
     for t in ts[1:-1]:
         point = _eval(hf_a, [float(t)])[0]
         taus.append(_dyadic(foot(point, float(taus[-1]), 1.0), taus[-1], mpq(1)))
     taus.append(mpq(1))
-    stack = list(zip(zip(ts[:-1], ts[1:]), zip(taus[:-1], taus[1:])))
-    count = len(stack)
+    level = list(zip(zip(ts[:-1], ts[1:]), zip(taus[:-1], taus[1:])))
+    count = len(level)
     best = mpq(0)
-    balls_a, balls_b = _ball_rows(hom_a), _ball_rows(hom_b)
-    while stack:
-        (ta, tb), (sa, sb) = stack.pop()
-        if balls_a is not None and balls_b is not None and sa < sb:
-            quick = ball_piece_bound(_ball_restrict(balls_a, ta, tb), _ball_restrict(balls_b, sa, sb))
-            if quick is not None and quick <= limit:
-                best = max(best, quick)
+    exact = _PairedPieces(hom_a, hom_b, limit)
+    net_a, net_b = _float_net(hom_a, hf_a), _float_net(hom_b, hf_b)
+    lim_lo, lim_hi = _float_limits(limit)
+    accepted = []  # (lo, hi, piece) decided by binary64 intervals
+    while level:
+        lo, hi = _level_bounds(net_a, net_b, level)
+        failed = []
+        for k, piece in enumerate(level):
+            if hi[k] <= lim_lo:
+                accepted.append((lo[k], hi[k], piece))
                 ball.count(stats, ball.BALL)
                 continue
-        piece_b = restrict_fast(hom_b, sa, sb) if sa < sb else np.array([hom_b_at(sa)] * 2, dtype=object)
-        bound = piece_bound(restrict_fast(hom_a, ta, tb), piece_b)
-        if bound <= limit:
-            best = max(best, bound)
-            ball.count(stats, ball.EXACT)
-            continue
-        if count >= max_pieces:
-            return None
-        tm = (ta + tb) / 2
-        point = _eval(hf_a, [float(tm)])[0]
-        sm = _dyadic(foot(point, float(sa), float(sb)), sa, sb) if sa < sb else sa
-        stack.append(((ta, tm), (sa, sm)))
-        stack.append(((tm, tb), (sm, sb)))
-        count += 1
-    return best
+            if not lo[k] > lim_hi:  # undecided in binary64
+                bound = exact.bound(piece, stats)
+                if bound is not None:
+                    best = max(best, bound)
+                    continue
+            if count >= max_pieces:
+                return None
+            failed.append(piece)
+            count += 1
+        level = _bisect(failed, hf_a, foot)
+    if not accepted:
+        return Certified(best, best)
+    lower = max(mpq(max(x[0] for x in accepted)), best)
+    upper = max(mpq(max(x[1] for x in accepted)), best)
+
+    def refine():
+        value = best
+        with ball.precision():  # called later, outside the caller's precision context
+            for lo_k, hi_k, piece in accepted:
+                if may_attain(mpq(hi_k), lower):
+                    bound = exact.bound(piece, None)
+                    value = max(value, mpq(hi_k) if bound is None else bound)
+        return value
+
+    return Certified(lower, upper, refine)
+
+
+def may_attain(upper: mpq, top: mpq) -> bool:
+    """Whether a bound known to lie below ``upper`` may be the largest of bounds one of which
+    is ``>= top`` (a margin of ``2^-20`` relative, ``2^-60`` absolute, far above the slack of
+    the ball and exact bounds against the formula value, ``<= 2^-64 (1 + value)``)."""
+    return upper >= top * (1 - mpq(1, 2**20)) - mpq(1, 2**60)
+
+
+
+def _level_bounds(net_a, net_b, level):
+    """:func:`float_piece_bounds` of the pieces of a level (``NaN`` where they do not apply)."""
+    nan = np.full(len(level), np.nan)
+    if net_a is None or net_b is None:
+        return nan, nan
+    usable = [k for k, (_, (sa, sb)) in enumerate(level) if sa < sb]
+    if not usable:
+        return nan, nan
+    ends = [_float_ends([level[k][j][i] for k in usable]) for j in (0, 1) for i in (0, 1)]
+    if any(x is None for x in ends):
+        return nan, nan
+    lo, hi = float_piece_bounds(net_a, net_b, *ends)
+    out_lo, out_hi = nan.copy(), nan.copy()
+    out_lo[usable], out_hi[usable] = lo, hi
+    return out_lo, out_hi
+
+
+def _bisect(failed, hf_a, foot):
+    """Children of the failed pieces: ``A`` halved, ``B`` cut at the float foot point of ``A``'s
+    midpoint (rounded to a dyadic, kept inside ``(sa, sb)``)."""
+    if not failed:
+        return []
+    mids = [(ta + tb) / 2 for (ta, tb), _ in failed]
+    points = _eval(hf_a, [float(t) for t in mids])
+    open_ = [k for k, (_, (sa, sb)) in enumerate(failed) if sa < sb]
+    feet = {}
+    if open_:
+        los = np.array([float(failed[k][1][0]) for k in open_])
+        his = np.array([float(failed[k][1][1]) for k in open_])
+        feet = dict(zip(open_, foot.many(points[open_], los, his)))
+    out = []
+    for k, ((ta, tb), (sa, sb)) in enumerate(failed):
+        tm = mids[k]
+        sm = _dyadic(float(feet[k]), sa, sb) if sa < sb else sa
+        out.append(((ta, tm), (sa, sm)))
+        out.append(((tm, tb), (sm, sb)))
+    return out
