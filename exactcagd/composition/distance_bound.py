@@ -133,6 +133,13 @@ def _squared_error(hom_f: np.ndarray, hom_x: np.ndarray):
 
 # ----------------------------------------------------------------------------- integer bisection
 @lru_cache(maxsize=64)
+def _halves(n: int) -> tuple[flint.fmpz_mat, flint.fmpz_mat]:
+    """The two ``(n + 1) x (n + 1)`` blocks of :func:`_halving_matrix` (left, right half)."""
+    rows = _halving_matrix(n).tolist()
+    return flint.fmpz_mat(rows[: n + 1]), flint.fmpz_mat(rows[n + 1:])
+
+
+@lru_cache(maxsize=64)
 def _halving_matrix(n: int) -> flint.fmpz_mat:
     """``2^n`` times de Casteljau's subdivision at ``t = 1/2`` as an integer ``(2n + 2) x (n + 1)`` matrix.
 
@@ -220,18 +227,24 @@ def _largest_ratio(e: list, w: list | None, w_low) -> flint.fmpq:
 
 def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
     """:func:`ratio_max_bound` on integer columns: the true ``e_i / w_i`` of a leaf at depth ``k``
-    is ``e_col_i / w_col_i * factor`` (``w_col = None``: ``w_i = 2^(n k)``, a constant ``w2``)."""
-    halve = _halving_matrix(n)
+    is ``e_col_i / w_col_i * factor`` (``w_col = None``: ``w_i = 2^(n k)``, a constant ``w2``).
+    A leaf keeps its coefficients as one ``fmpz_mat`` (columns ``e`` and ``w``) for its halving."""
+    left, right = _halves(n)
     zero = flint.fmpq(0)
     lower = zero
     heap: list = []
     counter = 0
+    columns = 1 if w_col is None else 2
 
-    def push(ce, cw, depth):
+    def push(mat, depth):
         nonlocal counter, lower
-        if cw is None:
+        entries = mat.entries()
+        ce = entries[::columns]
+        if w_col is None:
+            cw = None
             w_low = w_first = w_last = flint.fmpz(1) << (n * depth)
         else:
+            cw = entries[1::2]
             w_low, w_first, w_last = min(cw), cw[0], cw[-1]
         for a, b in ((ce[0], w_first), (ce[-1], w_last)):  # end coefficients: values at the ends
             if b > 0:
@@ -242,13 +255,13 @@ def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
             key = (1, -bound)
         else:
             bound, key = None, (0, zero)
-        heapq.heappush(heap, (key, counter, depth, ce, cw, bound))
+        heapq.heappush(heap, (key, counter, depth, mat, bound))
         counter += 1
 
-    push(e_col, w_col, 0)
-    size = n + 1
+    flat = e_col if w_col is None else [x for pair in zip(e_col, w_col) for x in pair]
+    push(flint.fmpz_mat(n + 1, columns, flat), 0)
     while True:
-        _, _, depth, ce, cw, bound = heap[0]
+        _, _, depth, mat, bound = heap[0]
         if bound is not None and (len(heap) >= max_leaves or bound <= lower * one_rel or bound == 0):
             break
         if bound is not None and target2 is not None and (bound <= target2 or lower > target2):
@@ -256,15 +269,9 @@ def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
         if depth > 60:
             return None
         heapq.heappop(heap)
-        if cw is None:
-            out = (halve * flint.fmpz_mat(size, 1, ce)).entries()
-            push(out[:size], None, depth + 1)
-            push(out[size:], None, depth + 1)
-        else:
-            out = (halve * flint.fmpz_mat(size, 2, [x for pair in zip(ce, cw) for x in pair])).entries()
-            push(out[0:2 * size:2], out[1:2 * size:2], depth + 1)
-            push(out[2 * size::2], out[2 * size + 1::2], depth + 1)
-    return from_fmpq(heap[0][5])
+        push(left * mat, depth + 1)
+        push(right * mat, depth + 1)
+    return from_fmpq(heap[0][4])
 
 
 def distance_bound(F: BezierCurve, cubic: BezierCurve, phi=None, rel: float = 0.02, max_leaves: int = 400, target=None,

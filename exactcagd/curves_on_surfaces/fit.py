@@ -233,7 +233,7 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     rows = 2 * s_fit.size - 1
     predicted = _prediction_operator(lo, top) @ np.vstack([target_fit, f0, f1])
     residual = predicted.reshape(top - lo + 1, rows, -1) - np.vstack([target_fit, target_check])
-    quick = np.linalg.norm(residual, axis=2).max(axis=1)
+    quick = np.sqrt(np.einsum("ijk,ijk->ij", residual, residual).max(axis=1))
     # the two float evaluations differ by rounding only (~1e-16 cond |F|): skip what is clearly above
     skip_above = tol_f * (1 + 2**-20) + 2**-30 * float(np.abs(target_fit).max())
     for d, approx in zip(range(lo, top + 1), quick):
@@ -243,7 +243,7 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
         if not _sampled_error(d, fctrl, target_fit, target_check) <= tol_f:  # (also rejects NaN; inf tol passes)
             continue
         ctrl = np.empty(fctrl.shape, dtype=object)
-        ctrl[1:-1] = [[mpq(x) for x in row] for row in fctrl[1:-1].tolist()]  # exact binary values
+        ctrl[1:-1] = [[mpq(*x.as_integer_ratio()) for x in row] for row in fctrl[1:-1].tolist()]  # exact binary values
         ctrl[0], ctrl[-1] = list(p0), list(p1)
         try:
             bound, decided_by = certify(hom, ctrl, target=tol)
