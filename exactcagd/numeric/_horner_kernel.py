@@ -267,8 +267,8 @@ def _divide(x, e_x, w, e_w, w_low, u_quotient, eta, bound, m):
 
 
 _COMPILED: dict = {}
-#: helpers of the kernel: compiled (inlined into it) before it and put in their place in
-#: this module's namespace, where numba resolves the kernel's calls
+#: helpers of the kernel: compiled before it and put in their place in this module's
+#: namespace, where numba resolves the kernel's calls (LLVM inlines them)
 _HELPERS = ("_up", "_down_positive", "_step", "_coordinate", "_first_pass", "_four_steps", "_divide", "_store")
 
 
@@ -282,7 +282,7 @@ def _compiled(func):
         namespace = globals()
         for name in _HELPERS:
             if not isinstance(namespace[name], numba.core.dispatcher.Dispatcher):
-                namespace[name] = numba.njit(inline="always", **options)(namespace[name])
+                namespace[name] = numba.njit(**options)(namespace[name])
         kernel = numba.njit(cache=True, **options)(func)
         _COMPILED[func.__name__] = kernel
     return kernel
