@@ -111,7 +111,7 @@ def bench_implicit(degrees, budget):
         rows.append([n] + [fmt(k) for k in tools] + [f"{ratio_ml:.2f}", f"{ratio_mlf:.2f}", f"{ratio_bare:.2f}"])
         raw.append((n, times))
         print(n, {k: round(v.median, 4) for k, v in times.items()}, flush=True)
-    headers = ["n"] + tools + ["ML det / Bezout nxn", "ML flint / flint res", "implicitize / bare flint (min times; goal <= 2)"]
+    headers = ["n"] + tools + ["ML det / Bezout nxn", "ML flint / flint res", "implicitize / bare flint (min of these few single calls; the issue 18 table below is the measurement)"]
     return markdown_table(headers, rows), rows, raw
 
 
