@@ -209,7 +209,9 @@ class DomainCurve:
             hi = max(q[axis] for q in pts)
             num = p["nu"] if axis == 0 else p["nv"]
             for value in lines:
-                if not (lo <= value <= hi):
+                # Bernstein coefficients w_i (q_i - value), w_i > 0, all >= 0 (or all <= 0) and not
+                # all zero: num - value w has no root in (0, 1) (each B_i > 0 there)
+                if not (lo < value < hi):
                     continue
                 poly = num - flint.fmpq(int(value.numerator), int(value.denominator)) * p["w"]
                 if poly == 0:
