@@ -16,9 +16,10 @@ Arithmetic: a Bernstein polynomial ``sum c_i B^n_i`` is carried as the ordinary
 polynomial ``sum C(n,i) c_i x^i`` ("scaled Bernstein form" = the homogeneous form
 ``sum c_i C(n,i) t^i (1-t)^(n-i)`` dehomogenized by ``x = t/(1-t)``).  Products of
 Bernstein polynomials are then plain polynomial products (notes 9.3) and sums of equal
-degree are plain sums, so the whole formula runs in python-flint ``fmpq_poly``
-arithmetic; one division by ``C(n, R)`` at the end gives the Bernstein coefficients.
-No power-basis conversion is made.  ``strategy="bernstein"`` evaluates the same
+degree are plain sums, so the whole formula runs in python-flint ``fmpz_poly``
+arithmetic (over common denominators, all coordinates packed into one integer per
+control point: :func:`_flint_route`); one division by ``C(R, r)`` at the end gives the
+Bernstein coefficients.  No power-basis conversion is made.  ``strategy="bernstein"`` evaluates the same
 formula as a homogeneous de Casteljau scheme with :func:`exactcagd.exact.bernstein.product`
 (kept for comparison; see ``benchmarks/bench_compose.py``).
 
