@@ -420,9 +420,12 @@ def _float_restrict(net: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray
     N = len(a)
     i = np.arange(n + 1)
     level = np.broadcast_to(net[:, None, None], (2, N, n + 1, n + 1, net.shape[-1]))
+    # parameter of level r for restricted point i: a while r < n - i, then b
+    t = np.where(np.arange(n)[:, None, None] < n - i[None, None, :], a[None, :, None], b[None, :, None])
+    t = t[:, None, :, :, None, None]
+    s = 1.0 - t
     for r in range(n):
-        t = np.where(r < n - i, a[:, None], b[:, None])[None, :, :, None, None]
-        level = (1.0 - t) * level[:, :, :, :-1] + t * level[:, :, :, 1:]
+        level = s[r] * level[:, :, :, :-1] + t[r] * level[:, :, :, 1:]
     mid, size = level[0, :, :, 0], level[1, :, :, 0]
     rad = _up(size * ((4 * n + 4) * _U) + _FLOAT_ABS)
     return _pair(rad - mid, mid + rad)
@@ -560,19 +563,20 @@ class _Footer:
 
     def many(self, points: np.ndarray, los: np.ndarray, his: np.ndarray) -> np.ndarray:
         """``[self(p, lo, hi) for ...]`` in one pass (the same float operations, the same values)."""
-        count = len(self.ts)
         i0 = np.floor(los / self.h).astype(np.int64)
-        i1 = np.minimum(np.ceil(his / self.h).astype(np.int64) + 1, count)  # slice ends, clipped
-        d = ((self.pts[None, :, :] - points[:, None, :]) ** 2).sum(-1)
-        index = np.arange(count)
+        i1 = np.minimum(np.ceil(his / self.h).astype(np.int64) + 1, len(self.ts))  # slice ends, clipped
+        first, last = int(i0.min()), int(i1.max())  # only the samples some window holds
+        d = ((self.pts[None, first:last, :] - points[:, None, :]) ** 2).sum(-1)
+        index = np.arange(first, last)
         inside = (index[None, :] >= i0[:, None]) & (index[None, :] < i1[:, None])
-        j = np.argmin(np.where(inside, d, np.inf), axis=1)
+        k = np.argmin(np.where(inside, d, np.inf), axis=1)
+        j = k + first
         t = self.ts[j].copy()
         rows = np.arange(len(j))
         interior = (j > i0) & (j < i1 - 1)
-        a = d[rows, np.maximum(j - 1, 0)]
-        b = d[rows, j]
-        c = d[rows, np.minimum(j + 1, count - 1)]
+        a = d[rows, np.maximum(k - 1, 0)]
+        b = d[rows, k]
+        c = d[rows, np.minimum(k + 1, last - first - 1)]
         den = a - 2 * b + c
         step = interior & (den > 0)
         with np.errstate(all="ignore"):

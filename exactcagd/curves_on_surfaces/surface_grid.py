@@ -64,6 +64,8 @@ class SurfaceGrid:
         self._full_bounds: dict = {}
         self._hom_net = None
         self._cells: dict = {}
+        self._partials: dict = {}
+        self._nets: dict = {}
 
     # ------------------------------------------------------------------ layout
     @property
@@ -176,16 +178,29 @@ class SurfaceGrid:
                 best_u, best_v = max(best_u, bu), max(best_v, bv)
         return best_u + best_v
 
+    def _cell_nets(self, key, level: int, cu: int, cv: int) -> tuple:
+        """The derivative nets restricted to the dyadic cell ``[cu, cu + 1] x [cv, cv + 1] / 2^level``.
+
+        Each cell's nets are its parent's split at ``1/2`` along both axes (cached): one
+        de Casteljau split per axis and level instead of a general restriction per cell;
+        the restriction of a polynomial to a box is unique, so the nets are the same.
+        """
+        ck = (key, level, cu, cv)
+        nets = self._nets.get(ck)
+        if nets is None:
+            if level == 0:
+                nets = self.derivative_nets(key)
+            else:
+                parent = self._cell_nets(key, level - 1, cu // 2, cv // 2)
+                nets = tuple(_half(_half(net, 0, cu % 2), 1, cv % 2) for net in parent)
+            self._nets[ck] = nets
+        return nets
+
     def _cell_bounds(self, key, level: int, cu: int, cv: int) -> tuple:
         ck = (key, level, cu, cv)
         if ck not in self._cells:
-            n = 2**level
             out = []
-            for net in self.derivative_nets(key):
-                r = net
-                if level:
-                    r = bz.along(0, bz.restrict, r, mpq(cu, n), mpq(cu + 1, n))
-                    r = bz.along(1, bz.restrict, r, mpq(cv, n), mpq(cv + 1, n))
+            for r in self._cell_nets(key, level, cu, cv):
                 best = mpq(0)
                 for row in r.reshape(-1, r.shape[-1]):
                     w = row[-1]
@@ -211,14 +226,31 @@ class SurfaceGrid:
 
     def tangent(self, key, point, direction) -> tuple:
         """Exact surface tangent ``S_u du + S_v dv`` at a local point for a local direction."""
-        u, v = point
-        du, dv = direction
         vec = None
-        for net, c in zip(self.derivative_nets(key), (du, dv)):
-            h = bz.de_casteljau(bz.de_casteljau(net, u), v)
-            val = [x / h[-1] * c for x in h[:-1]]
+        for partial, c in zip(self.partials(key, point), direction):
+            val = [x * c for x in partial]
             vec = val if vec is None else [a + b for a, b in zip(vec, val)]
         return tuple(vec)
+
+    def partials(self, key, point) -> tuple:
+        """Exact ``(S_u, S_v)`` at a local point (cached: the joints ask for them several times)."""
+        ck = (key, tuple(point))
+        try:
+            return self._partials[ck]
+        except KeyError:
+            pass
+        except TypeError:  # pragma: no cover - unhashable coordinates
+            return self._partials_at(key, point)
+        self._partials[ck] = out = self._partials_at(key, point)
+        return out
+
+    def _partials_at(self, key, point) -> tuple:
+        u, v = point
+        out = []
+        for net in self.derivative_nets(key):
+            h = bz.de_casteljau(bz.de_casteljau(net, u), v)
+            out.append(tuple(x / h[-1] for x in h[:-1]))
+        return tuple(out)
 
     def patches_near(self, u_range, v_range) -> list:
         """Keys of the patches whose closed spans meet the box (global coordinates)."""
@@ -234,6 +266,16 @@ class SurfaceGrid:
                 if a <= ub and ua <= b and c <= vb and va <= d:
                     out.append((i, j))
         return out
+
+
+def _half(net: np.ndarray, axis: int, side: int) -> np.ndarray:
+    """The left (``side = 0``) or right half of a tensor net along ``axis`` (exact)."""
+    if net.shape[axis] == 1:
+        return net
+    return bz.along(axis, lambda c: bz.subdivide(c, _HALF)[side], net)
+
+
+_HALF = mpq(1, 2)
 
 
 def _with_unit_weights(net: np.ndarray) -> np.ndarray:
