@@ -565,23 +565,15 @@ def _curve_coefficients(curve: BezierCurve, method: str) -> tuple[np.ndarray, np
     return _frozen(c, c_abs, np.stack([c, c_abs], axis=1))
 
 
-#: the kernel's arguments ``(c, sum_k |c_k|, gamma_over(6n + 1))`` of recently evaluated
-#: curves, keyed by identity (a BezierCurve is immutable): hashing a curve for the
-#: lru_cache key builds its point tuples, ~4 us per call
-_KERNEL_ARGUMENTS: dict = {}
-_KERNEL_ARGUMENTS_LIMIT = 64
-
-
+@lru_cache(maxsize=64)
 def _kernel_arguments(curve: BezierCurve) -> tuple[np.ndarray, np.ndarray, float]:
-    hit = _KERNEL_ARGUMENTS.get(id(curve))
-    if hit is not None and hit[0] is curve:  # the entry holds the curve: its id is not reused
-        return hit[1]
+    """The kernel's ``(c, sum_k |c_k|, gamma_over(6n + 1))``, read-only; one cache lookup per call.
+
+    Keyed by the curve's hash like :func:`_curve_coefficients` (not by identity: a curve
+    built on an array its maker still owns can change in place, and its hash with it).
+    """
     c, c_abs, _ = _curve_coefficients(curve, _Default.name)
-    arguments = (c, *_frozen(np.sum(c_abs, axis=0)), gamma_over(_Default.count(c.shape[0] - 1, None)))
-    if len(_KERNEL_ARGUMENTS) >= _KERNEL_ARGUMENTS_LIMIT:
-        _KERNEL_ARGUMENTS.clear()
-    _KERNEL_ARGUMENTS[id(curve)] = (curve, arguments)
-    return arguments
+    return (c, *_frozen(np.sum(c_abs, axis=0)), gamma_over(_Default.count(c.shape[0] - 1, None)))
 
 
 def _is_float_vector(ts) -> bool:
