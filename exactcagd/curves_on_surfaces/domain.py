@@ -130,7 +130,8 @@ class DomainCurve:
         self.curves = [c for _, c in pieces]
         self.homs = [c.homogeneous() for c in self.curves]
         self._polys = [self._make_polys(h) for h in self.homs]
-        first, last = self.curves[0].evaluate(0), self.curves[-1].evaluate(1)
+        # end points = end rows of the homogeneous form (endpoint interpolation; no evaluate() call)
+        first, last = (tuple(h[:-1] / h[-1]) for h in (self.homs[0][0], self.homs[-1][-1]))
         self.closed = first == last
 
     # ------------------------------------------------------------------ polynomials
