@@ -203,3 +203,40 @@ def test_constructor_normalizes_polynomial():
         RealAlgebraic(flint.fmpz_poly([-2, 0, 1]), 2, 3)  # none inside
     with pytest.raises(InputError):
         RealAlgebraic(flint.fmpz_poly([7]), 0, 1)
+
+
+@given(st.lists(st.tuples(st.integers(-(2**40), 2**40), st.integers(1, 2**12), st.integers(-300, 300)), min_size=1, max_size=9))
+@FAST
+def test_bernstein_integer_poly_is_the_primitive_power_form(entries):
+    """The integer power form of sum c_i B_i^n equals sympy's expansion of the Bernstein sum
+    made primitive with a positive leading coefficient (coefficients up to 2^+-300)."""
+    from exactcagd.exact.algebraic import bernstein_integer_poly
+
+    coeffs = [Fraction(p, q) * Fraction(2) ** e for p, q, e in entries]
+    expr = sp.expand(bernstein_sum(coeffs, T))
+    if expr == 0:
+        with pytest.raises(InputError):
+            bernstein_integer_poly([mpq(c.numerator, c.denominator) for c in coeffs])
+        return
+    poly = bernstein_integer_poly([mpq(c.numerator, c.denominator) for c in coeffs])
+    reference = sp.Poly(expr, T).clear_denoms()[1].primitive()[1]
+    if reference.LC() < 0:
+        reference = -reference
+    assert [int(c) for c in poly.coeffs()] == [int(c) for c in reference.all_coeffs()[::-1]]
+
+
+def test_real_roots_takes_a_flint_polynomial_and_the_helpers_are_exact():
+    """real_roots(fmpz_poly) = real_roots(its coefficients); exact_dyadic and sign_at against
+    exact fractions."""
+    import flint
+
+    from exactcagd.exact.algebraic import exact_dyadic, sign_at
+
+    poly = flint.fmpz_poly([2, 0, -7, 0, 3])  # 3 t^4 - 7 t^2 + 2
+    assert [(str(r), m) for r, m in real_roots(poly)] == [(str(r), m) for r, m in real_roots([2, 0, -7, 0, 3])]
+    with pytest.raises(InputError):
+        real_roots(flint.fmpz_poly([]))
+    with flint.ctx.workprec(200):
+        x = flint.arb(3) / 2**70 + 5
+        assert exact_dyadic(x.mid()) == mpq(5) + mpq(3, 2**70) and exact_dyadic(flint.arb(0).mid()) == 0
+    assert [sign_at(poly, mpq(v)) for v in ("0", "1/2", "1", "-1", "2")] == [1, 1, -1, -1, 1]

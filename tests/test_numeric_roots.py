@@ -416,3 +416,182 @@ def test_marching_on_clustered_roots_hands_over_to_the_exact_route():
         assert r.certified and r.interval[0] <= i / 64 <= r.interval[1]
     with pytest.raises(LimitError):
         marching_roots(np.array([float(c) for c in coeffs]))
+
+
+# ------------------------------------------------------------------ method="exact" from flint's root balls (issue 18)
+def _sign(poly, q):
+    value = poly.eval(q)
+    return int(bool(value > 0)) - int(bool(value < 0))
+
+
+def _cmp_root(g, a, b, q) -> int:
+    """sign(r - q), exactly, for the one root ``r`` of the irreducible sympy polynomial ``g``
+    (degree >= 2: no rational root) in its isolating interval ``[a, b]`` and a rational ``q``."""
+    if q < a:
+        return 1
+    if q > b:
+        return -1
+    return 1 if _sign(g, a) == _sign(g, q) else -1  # g changes sign once in [a, b], at the root
+
+
+def sympy_reference(coeffs):
+    """Real roots in [0, 1] of the expanded Bernstein sum, by sympy alone: irreducible factors
+    (``factor_list``), rational roots of the linear ones, isolating intervals
+    (``Poly.intervals``, exact rationals) of the others.  Returns sorted ``(locate, m)``,
+    ``locate(q) = sign(root - q)`` exactly for rational ``q``."""
+    n = len(coeffs) - 1
+    poly = sum((sympy.Poly(sympy.Rational(str(c)) * sympy.binomial(n, i) * T**i * (1 - T) ** (n - i), T)
+                for i, c in enumerate(coeffs)), sympy.Poly(0, T))
+    roots = []
+    for f, m in poly.factor_list()[1]:
+        if f.degree() == 1:
+            r = -f.nth(0) / f.nth(1)
+            found = [(r, lambda q, r=r: int(bool(r > q)) - int(bool(r < q)))]
+        else:
+            found = []
+            for (a, b), _ in f.intervals(eps=sympy.Rational(1, 2**80)):
+                a, b = sympy.Rational(a), sympy.Rational(b)
+                found.append((a, lambda q, f=f, a=a, b=b: _cmp_root(f, a, b, q)))
+        roots += [(key, locate, m) for key, locate in found if locate(sympy.Integer(0)) >= 0 and locate(sympy.Integer(1)) <= 0]
+    roots.sort(key=lambda root: root[0])
+    return [(locate, m) for _, locate, m in roots]
+
+
+def assert_exact_method_matches_sympy(coeffs):
+    """bernstein_roots(method="exact") against :func:`sympy_reference`.  Every root lies in
+    exactly one returned enclosure, a certified one holds exactly one root, of the stated
+    multiplicity, in the smallest float interval that holds it (one float, or one float
+    step), with ``t`` the root correctly rounded (strictly inside ``t``'s rounding cell; a
+    rational tie rounds to even).  An uncertified one (``exists``) holds two or more roots
+    within one float step of each other (no float interval separates them), with the sum of
+    their multiplicities."""
+    found = bernstein_roots(coeffs, method="exact")
+    ref = sympy_reference(coeffs)
+    inside = []
+    for root in found:
+        lo, hi = (sympy.Rational(v) for v in root.interval)
+        held = [(locate, m) for locate, m in ref if locate(lo) >= 0 and locate(hi) <= 0]
+        inside.append(held)
+        assert root.exists and held and root.multiplicity == sum(m for _, m in held), (root, len(held))
+        assert root.certified == (len(held) == 1), root
+        if not root.certified:
+            assert hi - lo <= 2 * sympy.Rational(math.ulp(root.interval[1])), root
+            continue
+        ((locate, _),) = held
+        assert lo == hi or (math.nextafter(root.interval[0], math.inf) == root.interval[1] and locate(lo) > 0 and locate(hi) < 0), root
+        t = root.t
+        below = (sympy.Rational(t) + sympy.Rational(math.nextafter(t, -math.inf))) / 2
+        above = (sympy.Rational(t) + sympy.Rational(math.nextafter(t, math.inf))) / 2
+        s_below, s_above = locate(below), locate(above)
+        even = (math.frexp(t)[0] * 2**53) % 2 == 0 if t else True
+        assert s_below > 0 or (s_below == 0 and even), (t, root)
+        assert s_above < 0 or (s_above == 0 and even), (t, root)
+    assert sum(len(held) for held in inside) == len(ref)  # each root in exactly one enclosure
+    return found
+
+
+def _scaled(coeffs, exps):
+    return as_coefficients([mpq(c) * mpq(2) ** e for c, e in zip(coeffs, exps)])
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.integers(-(2**20), 2**20), min_size=2, max_size=11).filter(any), st.integers(-300, 300))
+def test_exact_method_matches_sympy_random(coeffs, shift):
+    """Random integer coefficients, and the same scaled by 2^shift (|shift| <= 300): same
+    roots, and the scaled output identical to the unscaled one."""
+    found = assert_exact_method_matches_sympy(as_coefficients(coeffs))
+    assert bernstein_roots(_scaled(coeffs, [shift] * len(coeffs)), method="exact") == found
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.tuples(st.integers(-99, 99), st.integers(-300, 300)), min_size=2, max_size=8).filter(lambda c: any(v for v, _ in c)))
+def test_exact_method_matches_sympy_huge_coefficients(pairs):
+    """Each coefficient scaled by its own 2^+-300: roots pressed within 2^-300 of 0 or 1."""
+    assert_exact_method_matches_sympy(_scaled([v for v, _ in pairs], [e for _, e in pairs]))
+
+
+# rational points, including the ends and points a float step inside them
+POINTS = st.one_of(st.fractions(0, 1, max_denominator=2**12).map(lambda f: mpq(f.numerator, f.denominator)),
+                   st.sampled_from([mpq(0), mpq(1), mpq(1, 2**53), 1 - mpq(1, 2**53), 1 - mpq(1, 2**52), mpq(1, 2) + mpq(1, 2**54)]))
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(POINTS, st.integers(1, 3)), max_size=4),
+       st.lists(st.tuples(POINTS, st.integers(20, 96), st.integers(1, 2)), max_size=2),
+       st.lists(st.integers(-9, 9), min_size=1, max_size=4).filter(any))
+def test_exact_method_matches_sympy_planted(rational, clusters, extra):
+    """Planted rational roots (multiple, at 0 and 1, a float step inside), clusters: pairs of
+    irrational roots c -+ 2^-k/2 (k <= 96: a float step apart at least) of multiplicity 1-2
+    from (t - c)^2 - 2^-k, times a random integer factor."""
+    c = product(planted(rational), as_coefficients(extra))
+    for center, k, mult in clusters:
+        quad = as_coefficients([center**2 - mpq(1, 2**k), center * (1 - center) - mpq(1, 2**k), (1 - center) ** 2 - mpq(1, 2**k)])
+        for _ in range(mult):
+            c = product(c, quad)
+    assert_exact_method_matches_sympy(c)
+
+
+@pytest.mark.parametrize("power", [
+    [-1, 0, 2],                                     # 1/sqrt 2
+    [-(2**300 + 1), 0, 2**300 * 4],                 # just above 1/2
+    [-1, 0, 2**2100],                               # 2^-1050: a subnormal float
+    [-(2**200 - 1), 0, 2**200],                     # within 2^-201 of 1
+])
+def test_exact_method_irrational_roots_at_the_float_limits(power):
+    """Square roots at the edge of float resolution (near 1/2, 1 and subnormal): checked
+    against sympy as above."""
+    assert_exact_method_matches_sympy(from_power(as_coefficients(power)))
+
+
+def test_exact_method_root_near_a_rounding_boundary_falls_back_to_bisection(monkeypatch):
+    """A root within 2^-300 of the midpoint h between 1/2 and the next float: the balls at 64
+    and 192 bits cannot decide the rounding, and the exact bisection route answers, with the
+    root correctly rounded up (it exceeds h).  Reference: sympy, as above."""
+    import exactcagd.numeric.roots as roots_module
+
+    h = mpq(1, 2) + mpq(1, 2**54)
+    target = h * h + mpq(1, 2**300)
+    power = as_coefficients([-target, 0, 1])  # t^2 - target: root just above h
+    calls = []
+    original = roots_module._roots_by_bisection
+    monkeypatch.setattr(roots_module, "_roots_by_bisection", lambda *a: calls.append(a) or original(*a))
+    (root,) = assert_exact_method_matches_sympy(from_power(power))
+    assert calls and root.certified and root.t == math.nextafter(0.5, 1.0)
+
+
+def test_round_ball_refuses_a_ball_reaching_a_rounding_boundary():
+    """The certificate of the rounding: a ball 2^-71 below the midpoint h between 1/2 and the
+    next float rounds to 1/2, in the float step [1/2, next]; the same ball 2^-140 wider
+    reaches h (a planted violation just above the bound) and is refused, as are a ball that
+    ends exactly at h and one that holds 1/2 (its float step is not decided)."""
+    import flint
+
+    from exactcagd.numeric.roots import _round_ball
+
+    with flint.ctx.workprec(256):
+        h = flint.arb(0.5) + flint.arb(2) ** -54
+        mid, rad = h - flint.arb(2) ** -70, flint.arb(2) ** -71
+        assert _round_ball(flint.arb(mid, rad)) == (0.5, 0.5, math.nextafter(0.5, 1.0))
+        assert _round_ball(flint.arb(mid, rad + flint.arb(2) ** -71 + flint.arb(2) ** -140)) is None
+        assert _round_ball(flint.arb(mid, flint.arb(2) ** -70)) is None  # ends exactly at h
+        assert _round_ball(flint.arb(flint.arb(0.5) + flint.arb(2) ** -80, flint.arb(2) ** -79)) is None
+        # mirrored: just above the midpoint between the float below 1/2 and 1/2
+        low = flint.arb(0.5) - flint.arb(2) ** -55
+        assert _round_ball(flint.arb(low + flint.arb(2) ** -70, rad)) == (0.5, math.nextafter(0.5, 0.0), 0.5)
+        assert _round_ball(flint.arb(low + flint.arb(2) ** -70, rad + flint.arb(2) ** -71 + flint.arb(2) ** -140)) is None
+
+
+def test_exact_method_roots_within_a_float_step_share_an_enclosure():
+    """1 and 1/(1 + 2^-53) (a float step below 1, not a float): no float interval separates
+    them, so they come back as one uncertified enclosure [prev(1), 1] with multiplicity 2
+    (before, as two certified roots each claiming that enclosure).  Reference: sympy."""
+    found = assert_exact_method_matches_sympy(_scaled([1, -1, 0], [0, -54, 0]))
+    assert [(r.interval, r.multiplicity, r.certified) for r in found] == [((math.nextafter(1.0, 0.0), 1.0), 2, False)]
+
+
+def test_exact_method_restores_flint_precision():
+    import flint
+
+    before = flint.ctx.prec
+    bernstein_roots([1, -3, 1, 5, -2], method="exact")
+    assert flint.ctx.prec == before

@@ -31,7 +31,8 @@ resolution, near-roots of complex pairs) stays as an *uncertified* enclosure.  S
 Exact endpoint roots (``c_0 = 0`` or ``c_n = 0``) are found exactly and deflated with
 (9.1) before any float work.  The exact reference routes are
 :func:`exactcagd.exact.algebraic.real_roots_bernstein` and
-:func:`exactcagd.numeric.descartes.isolate_exact`.
+:func:`exactcagd.numeric.descartes.isolate_exact`; ``method="exact"`` reads the roots off
+flint's certified root balls of the factored integer polynomial (:func:`_exact_roots`).
 
 >>> [round(r.t, 12) for r in bernstein_roots([1, -3, 1])]   # 8t^2 - 8t + 1
 [0.146446609407, 0.853553390593]
@@ -81,7 +82,9 @@ class Root:
     ----------
     t : float
         Float estimate of the root (from the float method; the enclosure midpoint
-        when the enclosure came from the certification alone).
+        when the enclosure came from the certification alone; with ``method="exact"``
+        the root correctly rounded, proven -- on the bisection fallback, when a float
+        Newton estimate is confirmed by exact signs).
     interval : (float, float)
         ``lo <= hi``; proven to contain the roots it stands for.
     multiplicity : int
@@ -697,14 +700,18 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
     coeffs : sequence of exact numbers (ints, ``"p/q"`` strings, Fractions, floats = their binary value)
         Bernstein coefficients on [0, 1].
     method : "isolate" (notes 9.2, default), "marching" (notes 9.1) or "exact"
-        ``"exact"`` isolates the roots of the exact polynomial (flint, Descartes /
-        Vincent-Collins-Akritas), refines each isolating interval below ``tol`` and rounds
-        it outward to floats: every enclosure is certified with its exact multiplicity,
-        clusters and multiple roots included, and on exact input it is faster than the
-        float methods (``benchmarks/results/bench_roots_intersection.md``).
+        ``"exact"`` factors the exact polynomial over the integers (flint): rational roots
+        come exactly from linear factors, the others from Arb's certified root balls, with
+        exact isolation and bisection as the fallback.  Each root comes in the smallest
+        float interval that holds it (one float step, or one float) with ``t`` the root
+        correctly rounded, certified with its exact multiplicity, clusters and multiple
+        roots included; only roots within one float step of each other, which no float
+        interval separates, share one enclosure (``certified=False``, ``exists=True``, the
+        sum of their multiplicities).  On exact input it is faster than the float methods
+        (``benchmarks/results/bench_roots_intersection.md``).
     tol : float
-        Parameter tolerance (for ``"exact"``: the width of the enclosures, plus at most one
-        float step at each end from rounding them outward).
+        Parameter tolerance (``"exact"`` ignores it: its enclosures are one float step
+        wide, narrower than any ``tol``).
     certify : bool
         With False, the raw float roots come back (``interval = (t, t)``, nothing
         proven); used to time the float methods alone.
@@ -723,7 +730,7 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
         raise InputError(f"unknown root-finding method {method!r}; expected one of {METHODS}")
     tol = to_tolerance(tol)
     if method == "exact":
-        return _exact_roots(_validated(coeffs), tol)
+        return _exact_roots(_validated(coeffs))
     c, ends, y = _prepare(coeffs)
     if len(c) <= 1:
         return ends
@@ -732,7 +739,7 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
         estimates = finder(y, tol)
     except LimitError:
         # the float method hit its work bound: the exact route answers (certified)
-        return _exact_roots(c, tol)
+        return _exact_roots(_validated(coeffs))
     if not certify:
         raw = [Root(t, (t, t), m, False, False) for t, m in estimates]
         return sorted(ends + raw, key=lambda r: r.t)
@@ -740,20 +747,24 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
     return certify_roots(full, estimates, tol)
 
 
-def _exact_roots(c: np.ndarray, tol: float) -> list[Root]:
-    """Roots in [0, 1] of exact Bernstein coefficients ``c``, every one certified.
+def _exact_roots(c: np.ndarray) -> list[Root]:
+    """Roots in [0, 1] of exact Bernstein coefficients ``c``, each in the smallest float
+    interval that holds it.
 
-    The integer power form is factored over the integers; a linear factor gives its
-    rational root exactly; the real roots of every other (irreducible) factor come from
-    flint's certified root balls (:func:`_roots_in_balls`).  When a ball cannot be decided
-    at the precisions of ``BALL_PRECISIONS``, or two enclosures would not be disjoint, the
-    exact isolation and bisection route (:func:`_roots_by_bisection`) answers instead.
+    Sources: Sederberg's notes (003) 3.3 for the power form; Arb's
+    ``arb_fmpz_poly_complex_roots`` (F. Johansson) for the certified root balls.  The
+    integer power form is factored over the integers; a linear factor gives its rational
+    root exactly; the real roots of every other (irreducible) factor come from flint's
+    root balls (:func:`_roots_in_balls`).  When a ball cannot be decided at the
+    precisions of ``BALL_PRECISIONS``, exact isolation and bisection
+    (:func:`_roots_by_bisection`) answers instead.  Roots that no float interval can
+    separate share one enclosure (:func:`_share_enclosures`).
     """
     poly = bernstein_integer_poly(c)
     if poly.degree() < 1:
         return []
     roots = _roots_from_factors(poly)
-    return _roots_by_bisection(poly, tol) if roots is None else roots
+    return _share_enclosures(_roots_by_bisection(poly) if roots is None else roots)
 
 
 #: working precisions (bits) of flint's root balls, tried in turn for each irreducible factor
@@ -761,7 +772,7 @@ BALL_PRECISIONS = (64, 192)
 
 
 def _roots_from_factors(poly: flint.fmpz_poly) -> list[Root] | None:
-    """Roots in [0, 1] of a nonconstant integer polynomial, or None when undecided."""
+    """Roots in [0, 1] of a nonconstant integer polynomial, sorted, or None when undecided."""
     _, factors = poly.factor()
     roots = []
     for factor, mult in factors:
@@ -778,24 +789,17 @@ def _roots_from_factors(poly: flint.fmpz_poly) -> list[Root] | None:
         else:
             return None
         roots.extend(found)
-    roots.sort(key=lambda r: r.interval)
-    if any(left.interval[1] >= right.interval[0] for left, right in zip(roots, roots[1:])):
-        return None  # two roots within a float step of each other: enclosures would overlap
-    return roots
+    return sorted(roots, key=lambda r: r.interval)
 
 
 def _roots_in_balls(factor: flint.fmpz_poly, mult: int, prec: int) -> list[Root] | None:
     """The roots in (0, 1) of an irreducible integer polynomial of degree >= 2, from flint's
-    root balls at ``prec`` bits, or None when a ball does not decide the rounding.
+    root balls at ``prec`` bits, or None when a ball does not decide (:func:`_round_ball`).
 
     ``fmpz_poly.complex_roots`` (Arb's ``arb_fmpz_poly_complex_roots``) returns disjoint
     balls, each holding exactly one root, real roots with an imaginary part of exactly zero.
     A ball inside (0, 1) or wholly outside [0, 1] decides membership; one over 0 or 1 is
-    decided by exact signs (:func:`_inside_unit`).  The root rounds to the float ``x``
-    nearest to the midpoint when the ball lies strictly between the midpoints of ``x`` and
-    its float neighbours (arb's comparisons are certain, and those midpoints are exact at
-    ``prec >= 54`` bits); the ball rounded outward to floats (``x`` and at most one float
-    step on each side) is the enclosure.
+    decided by exact signs (:func:`_round_over_end`).
     """
     old = flint.ctx.prec
     flint.ctx.prec = prec
@@ -807,46 +811,111 @@ def _roots_in_balls(factor: flint.fmpz_poly, mult: int, prec: int) -> list[Root]
             real = ball.real
             if real < 0 or real > 1:
                 continue
-            if not (real > 0 and real < 1) and not _inside_unit(factor, real):
-                continue
-            x = float(real.mid())
-            below, above = math.nextafter(x, -math.inf), math.nextafter(x, math.inf)
-            exact = flint.arb(x)
-            if not ((exact + below) / 2 < real < (exact + above) / 2):
-                return None  # the ball straddles a rounding boundary
-            lo, hi = (x if real >= x else below), (x if real <= x else above)
-            out.append(Root(x, (max(lo, 0.0), min(hi, 1.0)), mult, True, True))
+            rounded = _round_ball(real) if (real > 0 and real < 1) else _round_over_end(factor, real)
+            if rounded is None:
+                return None
+            if rounded != "outside":
+                x, lo, hi = rounded
+                out.append(Root(x, (lo, hi), mult, True, True))
         return out
     finally:
         flint.ctx.prec = old
 
 
-def _inside_unit(factor: flint.fmpz_poly, real: flint.arb) -> bool:
-    """Whether the one root in a real root ball over 0 or 1 lies in (0, 1), by exact signs.
+def _round_ball(real: flint.arb) -> tuple[float, float, float] | None:
+    """``(x, lo, hi)``: every number in the ball rounds to the float ``x`` and lies in the
+    float step ``[lo, hi]``, ``[x, next float]`` or ``[previous float, x]``; None when the
+    ball reaches a rounding boundary (the midpoint of ``x`` and a float neighbour) or
+    holds ``x`` inside.
+
+    Needs ``flint.ctx.prec >= 54``, so that the midpoints of adjacent floats are exact;
+    arb's comparisons are certain (true for every point of the ball).
+    """
+    x = float(real.mid())
+    exact = flint.arb(x)
+    if real >= x:
+        above = math.nextafter(x, math.inf)
+        return (x, x, above) if real < (exact + above) / 2 else None
+    if real <= x:
+        below = math.nextafter(x, -math.inf)
+        return (x, below, x) if (exact + below) / 2 < real else None
+    return None
+
+
+def _round_over_end(factor: flint.fmpz_poly, real: flint.arb):
+    """:func:`_round_ball` for a real root ball over 0 or 1, in exact rationals: ``"outside"``
+    when the root is not in (0, 1), else ``(x, lo, hi)`` or None as there.
 
     The factor has no rational root, so it is nonzero at every rational point and changes
     sign exactly once in the ball: the root exceeds 0 iff the factor has the same sign at
-    0 as at the ball's lower end (and likewise at 1 and the upper end).
+    0 as at the ball's lower end (and likewise at 1 and the upper end).  The root then lies
+    in the ball clipped to the open interval (0, 1).
     """
     mid, rad = exact_dyadic(real.mid()), exact_dyadic(real.rad())
     lo, hi = mid - rad, mid + rad
-    if lo <= 0 and sign_at(factor, lo) != sign_at(factor, mpq(0)):
-        return False
-    return not (hi >= 1 and sign_at(factor, hi) != sign_at(factor, mpq(1)))
+    if lo <= 0:
+        if sign_at(factor, lo) != sign_at(factor, mpq(0)):
+            return "outside"
+        lo = mpq(0)
+    if hi >= 1:
+        if sign_at(factor, hi) != sign_at(factor, mpq(1)):
+            return "outside"
+        hi = mpq(1)
+    x = float((lo + hi) / 2)  # gmpy2 rounds correctly
+    exact = mpq(x)
+    if lo >= exact:
+        above = math.nextafter(x, math.inf)
+        return (x, x, above) if hi < (exact + mpq(above)) / 2 else None
+    if hi <= exact:
+        below = math.nextafter(x, -math.inf)
+        return (x, below, x) if (exact + mpq(below)) / 2 < lo else None
+    return None
 
 
-def _roots_by_bisection(poly: flint.fmpz_poly, tol: float) -> list[Root]:
-    """Roots in [0, 1] by exact isolation (:func:`exactcagd.exact.algebraic.real_roots`):
-    each isolating interval is refined by exact bisection below ``tol`` and rounded outward
-    to floats (at most one float step wider at each end), so the enclosure still holds the
-    root; ``t`` is ``float(root)`` (correctly rounded when the float Newton estimate is
-    confirmed by exact signs)."""
-    width = mpq(tol)  # exact binary value, independent of the user's float policy
+def _roots_by_bisection(poly: flint.fmpz_poly) -> list[Root]:
+    """Roots in [0, 1] by exact isolation (:func:`exactcagd.exact.algebraic.real_roots`),
+    each in its float step found by exact comparisons (the root refined by exact bisection
+    as far as they need), ``t`` the root correctly rounded (compared with the step's
+    midpoint)."""
     roots = []
     for r, m in real_roots(poly, 0, 1):
-        lo, hi = r.interval(width)
-        roots.append(Root(float(r), (iv.enclose_scalar(lo)[0], iv.enclose_scalar(hi)[1]), m, True, True))
-    return sorted(roots, key=lambda r: r.t)
+        if r.is_rational:
+            roots.append(Root(float(r.value), iv.enclose_scalar(r.value), m, True, True))
+            continue
+        x = float(r)  # within one float step of r (RealAlgebraic.__float__)
+        lo, hi = (x, math.nextafter(x, math.inf)) if r > x else (math.nextafter(x, -math.inf), x)
+        t = lo if r < (mpq(lo) + mpq(hi)) / 2 else hi
+        roots.append(Root(t, (max(lo, 0.0), min(hi, 1.0)), m, True, True))
+    return sorted(roots, key=lambda r: r.interval)
+
+
+def _share_enclosures(roots: list[Root]) -> list[Root]:
+    """Roots whose smallest float enclosures hold each other (roots within one float step
+    of each other) as one uncertified Root: the hull of their enclosures, the sum of their
+    multiplicities, ``t`` of the one of highest multiplicity; ``roots`` sorted.
+
+    With smallest enclosures, the root of ``b`` lies in ``a``'s enclosure exactly when
+    ``b``'s enclosure lies inside ``a``'s.
+    """
+    groups: list[list[Root]] = []
+    for root in roots:
+        if groups and any(_within(root.interval, o.interval) or _within(o.interval, root.interval) for o in groups[-1]):
+            groups[-1].append(root)
+        else:
+            groups.append([root])
+    out = []
+    for group in groups:
+        if len(group) == 1:
+            out.append(group[0])
+            continue
+        lead = max(group, key=lambda r: r.multiplicity)
+        hull = (min(r.interval[0] for r in group), max(r.interval[1] for r in group))
+        out.append(Root(lead.t, hull, sum(r.multiplicity for r in group), False, True))
+    return out
+
+
+def _within(inner: tuple[float, float], outer: tuple[float, float]) -> bool:
+    return outer[0] <= inner[0] and inner[1] <= outer[1]
 
 
 # ---------------------------------------------------------------- 9.4 line ∩ rational curve
