@@ -525,19 +525,20 @@ def _float_estimate(hf_a: np.ndarray, hf_b: np.ndarray, samples: int) -> float:
     pa, pb = _eval(hf_a, ts), _eval(hf_b, ts)
     if samples <= 1:
         return float(np.sqrt(((pa[:, None, :] - pb[None, :, :]) ** 2).sum(-1)).min())
-    return float(max(_seg_dist(pa, pb).max(), _seg_dist(pb, pa).max()))
+    both = _seg_dist(np.stack([pa, pb]), np.stack([pb, pa]))  # A -> B and B -> A in one pass
+    return float(max(both[0].max(), both[1].max()))
 
 
 def _seg_dist(p: np.ndarray, poly: np.ndarray) -> np.ndarray:
-    """Distance of each point of ``p`` to the polyline ``poly``."""
-    a, b = poly[:-1], poly[1:]
+    """Distance of each point of ``p`` to the polyline ``poly`` (leading axes: a batch)."""
+    a, b = poly[..., :-1, :], poly[..., 1:, :]
     e = b - a
     ee = (e * e).sum(-1)
     ee[ee == 0] = 1e-300
-    ap = p[:, None, :] - a[None, :, :]
-    s = np.clip((ap * e[None]).sum(-1) / ee[None], 0, 1)
-    foot = a[None] + s[..., None] * e[None]
-    return np.sqrt(((p[:, None, :] - foot) ** 2).sum(-1)).min(1)
+    ap = p[..., :, None, :] - a[..., None, :, :]
+    s = np.clip((ap * e[..., None, :, :]).sum(-1) / ee[..., None, :], 0, 1)
+    foot = a[..., None, :, :] + s[..., None] * e[..., None, :, :]
+    return np.sqrt(((p[..., :, None, :] - foot) ** 2).sum(-1)).min(-1)
 
 
 class _Footer:
@@ -785,8 +786,7 @@ def _hausdorff_bound(hom_a, hom_b, limit, pieces, max_pieces, stats, hf_a, hf_b)
     foot = _Footer(hf_b)
     ts = [mpq(i, pieces) for i in range(pieces + 1)]
     taus = [mpq(0)]
-    for t in ts[1:-1]:
-        point = _eval(hf_a, [float(t)])[0]
+    for point in _eval(hf_a, [float(t) for t in ts[1:-1]]):
         taus.append(_dyadic(foot(point, float(taus[-1]), 1.0), taus[-1], mpq(1)))
     taus.append(mpq(1))
     level = list(zip(zip(ts[:-1], ts[1:]), zip(taus[:-1], taus[1:])))
