@@ -383,20 +383,27 @@ def test_default_kernel_is_bit_identical_to_numpy_horner(monkeypatch, curve, ts)
     assert np.array_equal(evaluate(curve, ts, bound=False), ref_values, equal_nan=True)
 
 
-def test_default_kernel_long_input_and_planted_violation():
-    """Many parameters (several kernel blocks); an "exact" value planted at the radius
-    times (1 + 2^-50) from the computed one is caught by the certificate check."""
-    rng = np.random.default_rng(5)
-    curve = BezierCurve([[Fraction(int(x), 1 << 12) for x in rng.integers(-4096, 4096, 3)] for _ in range(11)],
-                        weights=[Fraction(int(w), 8) for w in rng.integers(4, 16, 11)])
+@pytest.mark.parametrize("degree,rational", [(3, False), (11, False), (3, True), (11, True)])
+def test_default_kernel_long_input_and_planted_violation(degree, rational):
+    """Many parameters (several kernel blocks) certified against exact evaluation; for
+    every checked point and coordinate, an "exact" value planted at the radius times
+    (1 + 2^-50) from the computed one, on either side, is caught by the certificate check."""
+    rng = np.random.default_rng(5 + degree)
+    points = [[Fraction(int(x), 1 << 12) for x in rng.integers(-4096, 4096, 3)] for _ in range(degree + 1)]
+    weights = [Fraction(int(w), 8) for w in rng.integers(4, 16, degree + 1)] if rational else None
+    curve = BezierCurve(points, weights)
     ts = rng.random(5000)  # above KERNEL_MIN_POINTS: the compiled path, several blocks
     values, radii = evaluate(curve, ts)
-    idx = rng.choice(ts.size, 40, replace=False)
+    idx = rng.choice(ts.size, 24, replace=False)
+    assert np.isfinite(radii[idx]).all() and (radii[idx] > 0).all()  # else the check below is vacuous
     exact = [exact_point(curve.control_points, curve.weights, q(ts[i])) for i in idx]
     check_bounds(exact, values[idx], radii[idx])
-    planted = [[q(v) + q(r) * (1 + mpq(1, 2**50)) for v, r in zip(values[i], radii[i])] for i in idx]
-    with pytest.raises(AssertionError, match="certificate violated"):
-        check_bounds(planted, values[idx], radii[idx])
+    for i in idx:
+        for j in range(3):
+            for side in (1, -1):
+                planted = [q(values[i, j]) + side * q(radii[i, j]) * (1 + mpq(1, 2**50))]
+                with pytest.raises(AssertionError, match="certificate violated"):
+                    check_bounds([planted], [[values[i, j]]], [[radii[i, j]]])
 
 
 def test_default_refuses_parameters_outside_unit_interval():
