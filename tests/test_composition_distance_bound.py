@@ -184,12 +184,34 @@ def test_interior_maximum_planted_violation_is_caught_by_the_bisection():
 
 
 def test_a_tie_the_rounded_coefficients_cannot_prove_is_decided_exactly():
-    """X = F + (1/1000, 0): E = 10^-6 everywhere, not a dyadic number, so the outward-rounded
-    coefficients exceed target^2 = 10^-6; the exact coefficients prove the bound 1/1000."""
-    from exactcagd.composition import ball
+    """F = C + (delta, 0) written as H / W with W = 1 + t / 3^90 (long coefficients), C
+    polynomial: E = delta^2 W^2 / W^2 = delta^2 exactly (the construction is the reference;
+    H = W (C + delta e_x) by the Bernstein product formula, notes 9.3, in Fractions).  Rounded
+    outward to ball.PREC bits the coefficients of delta^2 W^2 and W^2 no longer prove
+    target = delta; the exact ones prove exactly delta; delta (1 + 2^-50) is refused."""
+    import numpy as np
+    from gmpy2 import mpq
 
-    F = [[Fr(0), Fr(0)], [Fr(1, 3), Fr(2)], [Fr(2, 3), Fr(-1)], [Fr(1), Fr(1, 7)]]
+    from exactcagd.composition import ball
+    from exactcagd.composition.distance_bound import homogeneous_distance_bound
+
     tol = Fr(1, 1000)
+    C = [[Fr(0), Fr(0)], [Fr(1, 3), Fr(2)], [Fr(1), Fr(-1)]]
+    W = [Fr(1), 1 + Fr(1, 3**90)]
+
+    def hom_of(delta):
+        G = [[p[0] + delta, p[1]] for p in C]
+        rows = []
+        for k in range(4):  # degree 1 x degree 2 -> degree 3
+            terms = [(i, k - i) for i in range(2) if 0 <= k - i <= 2]
+            coef = {(i, j): Fr(comb(1, i) * comb(2, j), comb(3, k)) for i, j in terms}
+            h = [sum(coef[i, j] * W[i] * G[j][c] for i, j in terms) for c in range(2)]
+            rows.append(h + [sum(coef[i, j] * W[i] for i, j in terms)])
+        return np.array([[mpq(x.numerator, x.denominator) for x in r] for r in rows], dtype=object)
+
+    hom_c = np.array([[mpq(p[0].numerator, p[0].denominator), mpq(p[1].numerator, p[1].denominator), mpq(1)] for p in C],
+                     dtype=object)
     stats: dict = {}
-    bound = distance_bound(BezierCurve(F), BezierCurve(_shifted(F, tol)), target=tol, stats=stats)
-    assert bound == tol and stats == {ball.EXACT: 1}
+    assert homogeneous_distance_bound(hom_of(tol), hom_c, target=tol, stats=stats) == tol
+    assert stats == {ball.EXACT: 1}
+    assert homogeneous_distance_bound(hom_of(tol * (1 + Fr(1, 2**50))), hom_c, target=tol) > tol

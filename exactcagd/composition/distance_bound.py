@@ -156,29 +156,35 @@ def _halving_matrix(n: int) -> flint.fmpz_mat:
 def _integer_column(p: flint.fmpq_poly, n: int, bits: int | None, up: bool) -> tuple[list, flint.fmpq]:
     """``(c, s)``: integers ``c_i`` with ``c_i s`` the Bernstein coefficients (degree ``n``) of the
     scaled form ``p``, exactly (``bits=None``), or rounded outward to ``bits`` significant bits
-    of the largest one (``up``: every ``c_i s >= b_i``, else ``<=``): a dyadic enclosure."""
-    den = p.denom()
+    of the largest one (``up``: every ``c_i s >= b_i``, else ``<=``): a dyadic enclosure.
+
+    ``p = numer / den`` with an integer numerator; ``b_i = numer_i / (den C(n, i))``, over
+    the common denominator ``den L`` (``L = lcm_i C(n, i)``) ``b_i = numer_i (L / C(n, i)) / (den L)``.
+    """
     numer = p.numer().coeffs()
     numer += [flint.fmpz(0)] * (n + 1 - len(numer))
-    binomials = _binomials(n)
-    if bits is None:  # common denominator den * lcm(C(n, i))
-        lcm = _binomial_lcm(n)
-        return [a * (lcm // b) for a, b in zip(numer, binomials)], flint.fmpq(1, den * lcm)
-    top = max(int(abs(a)).bit_length() for a in numer)
-    shift = max(0, bits - top + int(den).bit_length())
-    scaled_den = [den * b for b in binomials]
-    if up:  # ceiling: -floor(-x)
-        column = [-((-a << shift) // d) for a, d in zip(numer, scaled_den)]
+    lcm, cofactors = _binomial_cofactors(n)
+    column = [a * c for a, c in zip(numer, cofactors)]
+    scale = flint.fmpq(1, p.denom() * lcm)
+    if bits is None:
+        return column, scale
+    shift = max(int(abs(x)).bit_length() for x in column) - bits
+    if shift <= 0:
+        return column, scale
+    if up:  # ceiling of x / 2^shift is -floor(-x / 2^shift)
+        column = [-((-x) >> shift) for x in column]
     else:
-        column = [(a << shift) // d for a, d in zip(numer, scaled_den)]
-    return column, flint.fmpq(1, flint.fmpz(1) << shift)
+        column = [x >> shift for x in column]
+    return column, scale * (flint.fmpz(1) << shift)
 
 
 @lru_cache(maxsize=64)
-def _binomial_lcm(n: int) -> int:
+def _binomial_cofactors(n: int) -> tuple[int, tuple]:
+    """``(L, (L / C(n, i))_i)`` with ``L = lcm_i C(n, i)``."""
     from math import lcm
 
-    return lcm(*_binomials(n))
+    big = lcm(*_binomials(n))
+    return big, tuple(big // b for b in _binomials(n))
 
 
 def ratio_max_bound(e: flint.fmpq_poly, w2, n: int, rel, max_leaves: int, target2=None, bits: int | None = None):
