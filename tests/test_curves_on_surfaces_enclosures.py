@@ -186,3 +186,44 @@ def test_lazy_certificate_value_lies_in_its_interval():
     value = cert.value()
     assert cert.lower <= value <= cert.upper <= mpq(1, 2)
     assert value == hd.hausdorff_bound(a, b, mpq(1, 2)) and value >= mpq(1, 8)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.integers(0, 4).flatmap(lambda lv: st.tuples(st.just(lv), st.integers(0, 2**lv - 1), st.integers(0, 2**lv - 1))), st.booleans())
+def test_derivative_cell_bounds_equal_the_restricted_nets(cell, rational):
+    """Cell bounds (max |S_u|^2, max |S_v|^2 of the control points of the derivative nets on
+    a dyadic cell, computed with flint matrices) equal the same maxima over nets restricted
+    here by two de Casteljau splits per axis in Fractions."""
+    from exactcagd import BezierSurface
+    from exactcagd.curves_on_surfaces.surface_grid import SurfaceGrid
+
+    level, cu, cv = cell
+    net = [[[i, j, (i * j + i) % 3 - 1] for j in range(3)] for i in range(4)]
+    weights = [[1 + (i + 2 * j) % 3 for j in range(3)] for i in range(4)] if rational else None
+    grid = SurfaceGrid(BezierSurface(net, weights))
+    got = grid._cell_bounds((0, 0), level, cu, cv)
+    n = 2**level
+    for axis_net, value in zip(grid.derivative_nets((0, 0)), got):
+        rows = [[[Fraction(int(x.numerator), int(x.denominator)) for x in axis_net[i, j]] for j in range(axis_net.shape[1])] for i in range(axis_net.shape[0])]
+        cols = [_restrict_coeffs([rows[i][j] for i in range(len(rows))], Fraction(cu, n), Fraction(cu + 1, n)) for j in range(len(rows[0]))]
+        rows = [[cols[j][i] for j in range(len(cols))] for i in range(len(rows))]
+        rows = [_restrict_coeffs(r, Fraction(cv, n), Fraction(cv + 1, n)) for r in rows]
+        best = max(sum(x * x for x in p[:-1]) / (p[-1] * p[-1]) for r in rows for p in r)
+        assert Fraction(int(value.numerator), int(value.denominator)) == best
+
+
+def _restrict_coeffs(points, a, b):
+    """Restriction of a Bézier polynomial with vector coefficients to [a, b] (Fractions)."""
+
+    def split(rows, t):
+        left, right, level = [rows[0]], [rows[-1]], rows
+        while len(level) > 1:
+            level = [[(1 - t) * x + t * y for x, y in zip(r0, r1)] for r0, r1 in zip(level[:-1], level[1:])]
+            left.append(level[0])
+            right.append(level[-1])
+        return left, right[::-1]
+
+    rows, _ = split(points, b)
+    if a:
+        _, rows = split(rows, a / b)
+    return rows

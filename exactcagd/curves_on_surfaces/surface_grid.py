@@ -23,7 +23,9 @@ mpq(4,1)
 from __future__ import annotations
 
 import bisect
+from functools import lru_cache
 
+import flint
 import numpy as np
 from gmpy2 import mpq
 
@@ -65,7 +67,7 @@ class SurfaceGrid:
         self._hom_net = None
         self._cells: dict = {}
         self._partials: dict = {}
-        self._nets: dict = {}
+        self._matrices: dict = {}
 
     # ------------------------------------------------------------------ layout
     @property
@@ -178,40 +180,39 @@ class SurfaceGrid:
                 best_u, best_v = max(best_u, bu), max(best_v, bv)
         return best_u + best_v
 
-    def _cell_nets(self, key, level: int, cu: int, cv: int) -> tuple:
-        """The derivative nets restricted to the dyadic cell ``[cu, cu + 1] x [cv, cv + 1] / 2^level``.
-
-        Each cell's nets are its parent's split at ``1/2`` along both axes (cached): one
-        de Casteljau split per axis and level instead of a general restriction per cell;
-        the restriction of a polynomial to a box is unique, so the nets are the same.
-        """
-        ck = (key, level, cu, cv)
-        nets = self._nets.get(ck)
-        if nets is None:
-            if level == 0:
-                nets = self.derivative_nets(key)
-            else:
-                parent = self._cell_nets(key, level - 1, cu // 2, cv // 2)
-                nets = tuple(_half(_half(net, 0, cu % 2), 1, cv % 2) for net in parent)
-            self._nets[ck] = nets
-        return nets
-
     def _cell_bounds(self, key, level: int, cu: int, cv: int) -> tuple:
         ck = (key, level, cu, cv)
         if ck not in self._cells:
             out = []
-            for r in self._cell_nets(key, level, cu, cv):
-                best = mpq(0)
-                for row in r.reshape(-1, r.shape[-1]):
-                    w = row[-1]
-                    if w <= 0:  # pragma: no cover - W^2 restricted inside [0,1]^2 stays positive
-                        raise ArithmeticError("derivative net lost weight positivity")
-                    sq = sum(x * x for x in row[:-1]) / (w * w)
-                    if sq > best:
-                        best = sq
-                out.append(best)
+            for net, matrix in zip(self.derivative_nets(key), self._derivative_matrices(key)):
+                (p, q), d = net.shape[:2], net.shape[-1]
+                # restricted net: rows (i, k), columns j; (M_u (x) I_d) X M_v^T in exact rationals
+                r = _restriction_kron(p - 1, level, cu, d) * matrix * _restriction_matrix(q - 1, level, cv).transpose()
+                entries = r.entries()
+                best = flint.fmpq(0)
+                for i in range(p):
+                    for j in range(q):
+                        row = [entries[(i * d + k) * q + j] for k in range(d)]
+                        w = row[-1]
+                        if w <= 0:  # pragma: no cover - W^2 restricted inside [0,1]^2 stays positive
+                            raise ArithmeticError("derivative net lost weight positivity")
+                        sq = sum((x * x for x in row[:-1]), flint.fmpq(0)) / (w * w)
+                        if sq > best:
+                            best = sq
+                out.append(mpq(int(best.p), int(best.q)))
             self._cells[ck] = tuple(out)
         return self._cells[ck]
+
+    def _derivative_matrices(self, key) -> tuple:
+        """The derivative nets as flint matrices, rows ``(i, k)`` (u index, coordinate), columns ``j``."""
+        if key not in self._matrices:
+            mats = []
+            for net in self.derivative_nets(key):
+                p, q, d = net.shape
+                flat = [net[i, j, k] for i in range(p) for k in range(d) for j in range(q)]
+                mats.append(flint.fmpq_mat(p * d, q, [_fmpq(x) for x in flat]))
+            self._matrices[key] = tuple(mats)
+        return self._matrices[key]
 
     def global_lipschitz_sq(self, key) -> mpq:
         """Bound of ``|S_u|^2 + |S_v|^2`` over the whole patch in *global* coordinates."""
@@ -268,14 +269,32 @@ class SurfaceGrid:
         return out
 
 
-def _half(net: np.ndarray, axis: int, side: int) -> np.ndarray:
-    """The left (``side = 0``) or right half of a tensor net along ``axis`` (exact)."""
-    if net.shape[axis] == 1:
-        return net
-    return bz.along(axis, lambda c: bz.subdivide(c, _HALF)[side], net)
+def _fmpq(x) -> flint.fmpq:
+    x = mpq(x)
+    return flint.fmpq(int(x.numerator), int(x.denominator))
 
 
-_HALF = mpq(1, 2)
+@lru_cache(maxsize=None)
+def _restriction_matrix(n: int, level: int, cell: int) -> flint.fmpq_mat:
+    """``M`` with ``restrict(c, cell / 2^level, (cell + 1) / 2^level) = M c`` for degree ``n``
+    (the restriction of the identity's columns, :func:`exactcagd.exact.bernstein.restrict`)."""
+    eye = np.array([[mpq(int(i == j)) for j in range(n + 1)] for i in range(n + 1)], dtype=object)
+    scale = 2**level
+    m = eye if level == 0 else bz.restrict(eye, mpq(cell, scale), mpq(cell + 1, scale))
+    return flint.fmpq_mat(n + 1, n + 1, [_fmpq(x) for x in m.flat])
+
+
+@lru_cache(maxsize=None)
+def _restriction_kron(n: int, level: int, cell: int, d: int) -> flint.fmpq_mat:
+    """``M (x) I_d``: the restriction along ``u`` acting on rows ``(i, k)``."""
+    m = _restriction_matrix(n, level, cell).entries()
+    size = (n + 1) * d
+    out = [flint.fmpq(0)] * (size * size)
+    for i in range(n + 1):
+        for j in range(n + 1):
+            for k in range(d):
+                out[(i * d + k) * size + j * d + k] = m[i * (n + 1) + j]
+    return flint.fmpq_mat(size, size, out)
 
 
 def _with_unit_weights(net: np.ndarray) -> np.ndarray:
