@@ -168,7 +168,7 @@ def _integer_column(p: flint.fmpq_poly, n: int, bits: int | None, up: bool) -> t
     scale = flint.fmpq(1, p.denom() * lcm)
     if bits is None:
         return column, scale
-    shift = max(int(abs(x)).bit_length() for x in column) - bits
+    shift = max(max(column), -min(column)).bit_length() - bits
     if shift <= 0:
         return column, scale
     if up:  # ceiling of x / 2^shift is -floor(-x / 2^shift)
