@@ -65,6 +65,8 @@ MAX_DEGREE = 14
 NODES = 48
 #: Smallest parameter width of a piece (relative to its domain piece) before giving up.
 MIN_WIDTH = mpq(1, 2**40)
+#: Degrees whose sampled errors are computed together (one matrix product).
+_DEGREE_BLOCK = 4
 #: Reasons of a domain joint that separate exact images (other cuts are not needed).
 _KEEP = {"start", "end", "curve-knot", "u-knot-line", "v-knot-line"}
 
@@ -217,9 +219,10 @@ def _sampled_error(d: int, fctrl: np.ndarray, target_fit: np.ndarray, target_che
 def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     """``(ctrl, bound, decided_by)`` of the lowest degree that certifies ``<= tol``, or ``None``.
 
-    The sampled errors of all degrees come from one product (:func:`_prediction_operator`);
-    a degree whose error there is clearly above ``tol`` is skipped, the others are fitted and
-    re-measured one by one exactly as before, so the selected degree is the same.
+    The sampled errors of ``_DEGREE_BLOCK`` consecutive degrees come from one product
+    (:func:`_prediction_operator`); a degree whose error there is clearly above ``tol`` is
+    skipped, the others are fitted and re-measured one by one exactly as before, so the
+    selected degree is the same.
     """
     s_fit, _, fit_bytes, check_bytes = _samples()
     n = hom.shape[0] - 1
@@ -228,30 +231,39 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     f0, f1 = np.array([float(x) for x in p0]), np.array([float(x) for x in p1])
     polynomial = all(x == hom[0, -1] for x in hom[:, -1])
     top = min(max_degree, n) if polynomial else max_degree
-    lo = max(1, min(3, top))
     tol_f = to_float(tol)
     rows = 2 * s_fit.size - 1
-    predicted = _prediction_operator(lo, top) @ np.vstack([target_fit, f0, f1])
-    residual = predicted.reshape(top - lo + 1, rows, -1) - np.vstack([target_fit, target_check])
-    quick = np.sqrt(np.einsum("ijk,ijk->ij", residual, residual).max(axis=1))
+    data, targets = np.vstack([target_fit, f0, f1]), np.vstack([target_fit, target_check])
     # the two float evaluations differ by rounding only (~1e-16 cond |F|): skip what is clearly above
     skip_above = tol_f * (1 + 2**-20) + 2**-30 * float(np.abs(target_fit).max())
-    for d, approx in zip(range(lo, top + 1), quick):
-        if approx > skip_above:
-            continue
-        fctrl = _least_squares(d, s_fit, target_fit, f0, f1)
-        if not _sampled_error(d, fctrl, target_fit, target_check) <= tol_f:  # (also rejects NaN; inf tol passes)
-            continue
-        ctrl = np.empty(fctrl.shape, dtype=object)
-        ctrl[1:-1] = [[mpq(*x.as_integer_ratio()) for x in row] for row in fctrl[1:-1].tolist()]  # exact binary values
-        ctrl[0], ctrl[-1] = list(p0), list(p1)
-        try:
-            bound, decided_by = certify(hom, ctrl, target=tol)
-        except WeightError:
-            return None
-        if bound <= tol:
-            return ctrl, bound, decided_by
+    for lo in range(max(1, min(3, top)), top + 1, _DEGREE_BLOCK):
+        hi = min(top, lo + _DEGREE_BLOCK - 1)
+        residual = (_prediction_operator(lo, hi) @ data).reshape(hi - lo + 1, rows, -1) - targets
+        quick = np.sqrt(np.einsum("ijk,ijk->ij", residual, residual).max(axis=1))
+        for d, approx in zip(range(lo, hi + 1), quick):
+            if approx > skip_above:
+                continue
+            found = _fit_degree(d, hom, p0, p1, tol, (target_fit, target_check, f0, f1))
+            if found is not None:
+                return found if found[0] is not None else None
     return None
+
+
+def _fit_degree(d: int, hom, p0, p1, tol: mpq, floats: tuple):
+    """``(ctrl, bound, decided_by)`` when degree ``d`` passes the sampled test and certifies,
+    ``(None, None, None)`` when the weights are not bounded away from zero, else ``None``."""
+    target_fit, target_check, f0, f1 = floats
+    fctrl = _least_squares(d, _samples()[0], target_fit, f0, f1)
+    if not _sampled_error(d, fctrl, target_fit, target_check) <= to_float(tol):  # (rejects NaN; inf tol passes)
+        return None
+    ctrl = np.empty(fctrl.shape, dtype=object)
+    ctrl[1:-1] = [[mpq(*x.as_integer_ratio()) for x in row] for row in fctrl[1:-1].tolist()]  # exact binary values
+    ctrl[0], ctrl[-1] = list(p0), list(p1)
+    try:
+        bound, decided_by = certify(hom, ctrl, target=tol)
+    except WeightError:
+        return None, None, None
+    return (ctrl, bound, decided_by) if bound <= tol else None
 
 
 def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segments: int = 10000,
