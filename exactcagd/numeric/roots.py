@@ -725,6 +725,9 @@ def bernstein_roots(coeffs, method: str = "isolate", tol: float = 1e-12, certify
     >>> r = bernstein_roots([-1, 0, 1])          # 2t - 1
     >>> r[0].certified, r[0].interval[0] <= 0.5 <= r[0].interval[1]
     (True, True)
+    >>> s = bernstein_roots([1, -3, 1], method="exact")   # (2 -+ sqrt 2) / 4, correctly rounded
+    >>> [x.t for x in s], [math.nextafter(x.interval[0], 1.0) == x.interval[1] for x in s]
+    ([0.14644660940672624, 0.8535533905932737], [True, True])
     """
     if method not in METHODS:
         raise InputError(f"unknown root-finding method {method!r}; expected one of {METHODS}")
