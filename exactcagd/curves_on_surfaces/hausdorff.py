@@ -508,11 +508,11 @@ def _eval(hf: np.ndarray, ts) -> np.ndarray:
     ts = np.atleast_1d(np.asarray(ts, dtype=float))
     n = hf.shape[0] - 1
     s = 1.0 - ts
-    level = np.broadcast_to(hf, (len(ts),) + hf.shape).copy()
+    level = hf.T[:, :, None]  # (coordinate, control point, parameter): the parameters innermost
     for _ in range(n):
-        level = s[:, None, None] * level[:, :-1] + ts[:, None, None] * level[:, 1:]
-    pts = level[:, 0, :]
-    return pts[:, :-1] / pts[:, -1:]
+        level = s * level[:, :-1] + ts * level[:, 1:]
+    pts = np.broadcast_to(level[:, 0], (hf.shape[1], len(ts)))
+    return (pts[:-1] / pts[-1:]).T
 
 
 def float_hausdorff(hom_a, hom_b, samples: int = 129) -> float:
@@ -530,15 +530,16 @@ def _float_estimate(hf_a: np.ndarray, hf_b: np.ndarray, samples: int) -> float:
 
 
 def _seg_dist(p: np.ndarray, poly: np.ndarray) -> np.ndarray:
-    """Distance of each point of ``p`` to the polyline ``poly`` (leading axes: a batch)."""
-    a, b = poly[..., :-1, :], poly[..., 1:, :]
-    e = b - a
-    ee = (e * e).sum(-1)
+    """Distance of each planar point of ``p`` to the polyline ``poly`` (leading axes: a batch)."""
+    ax, ay = poly[..., :-1, 0], poly[..., :-1, 1]
+    ex, ey = poly[..., 1:, 0] - ax, poly[..., 1:, 1] - ay
+    ee = ex * ex + ey * ey
     ee[ee == 0] = 1e-300
-    ap = p[..., :, None, :] - a[..., None, :, :]
-    s = np.clip((ap * e[..., None, :, :]).sum(-1) / ee[..., None, :], 0, 1)
-    foot = a[..., None, :, :] + s[..., None] * e[..., None, :, :]
-    return np.sqrt(((p[..., :, None, :] - foot) ** 2).sum(-1)).min(-1)
+    ax, ay, ex, ey, ee = (x[..., None, :] for x in (ax, ay, ex, ey, ee))
+    px, py = p[..., :, 0, None], p[..., :, 1, None]
+    s = np.minimum(np.maximum(((px - ax) * ex + (py - ay) * ey) / ee, 0.0), 1.0)
+    gx, gy = px - (ax + s * ex), py - (ay + s * ey)
+    return np.sqrt((gx * gx + gy * gy).min(-1))  # sqrt is monotone and correctly rounded: min first
 
 
 class _Footer:
@@ -567,7 +568,9 @@ class _Footer:
         i0 = np.floor(los / self.h).astype(np.int64)
         i1 = np.minimum(np.ceil(his / self.h).astype(np.int64) + 1, len(self.ts))  # slice ends, clipped
         first, last = int(i0.min()), int(i1.max())  # only the samples some window holds
-        d = ((self.pts[None, first:last, :] - points[:, None, :]) ** 2).sum(-1)
+        dx = self.pts[None, first:last, 0] - points[:, 0, None]
+        dy = self.pts[None, first:last, 1] - points[:, 1, None]
+        d = dx * dx + dy * dy  # ((pts - point) ** 2).sum(-1), the same operations
         index = np.arange(first, last)
         inside = (index[None, :] >= i0[:, None]) & (index[None, :] < i1[:, None])
         k = np.argmin(np.where(inside, d, np.inf), axis=1)
