@@ -121,7 +121,7 @@ def test_ball_and_exact_bisections_agree_to_high_precision():
 
 def test_halving_matrix_is_de_casteljau_at_one_half():
     """2^-n times the integer matrix gives both halves' Bernstein coefficients; reference:
-    the de Casteljau triangle at t = 1/2 in Fractions (its two edges, notes 2.4)."""
+    the de Casteljau triangle at t = 1/2 in Fractions (its two edges, notes 2.3)."""
     from exactcagd.composition.distance_bound import _halving_matrix
 
     for n in (1, 2, 5, 9):

@@ -145,7 +145,7 @@ def _halving_matrix(n: int) -> flint.fmpz_mat:
 
     Rows ``0..n`` give the Bernstein coefficients on ``[0, 1/2]``,
     ``b'_i = 2^-i sum_j C(i, j) b_j``, rows ``n+1..2n+1`` those on ``[1/2, 1]``,
-    ``b''_i = 2^-(n-i) sum_j C(n-i, j-i) b_j`` (notes 2.4, the de Casteljau triangle's
+    ``b''_i = 2^-(n-i) sum_j C(n-i, j-i) b_j`` (notes 2.3, the de Casteljau triangle's
     two edges); scaled by ``2^n`` every entry is an integer, so subdivision is exact.
     """
     left = [[bz.binomial(i, j) << (n - i) for j in range(n + 1)] for i in range(n + 1)]
@@ -198,6 +198,11 @@ def ratio_max_bound(e: flint.fmpq_poly, w2, n: int, rel, max_leaves: int, target
     ``max_leaves`` leaves exist.  ``bits``: round the coefficients on [0, 1] outward first
     (``e`` up, ``w2`` down: a pointwise larger ``e`` and smaller ``w2``, so every bound stays a
     bound) to keep the integers short -- the ball route; ``None``: exact.
+
+    >>> import flint
+    >>> e = flint.fmpq_poly([0, 4])   # 4 t (1 - t): Bernstein (0, 2, 0), scaled (0, 4, 0); max 1
+    >>> ratio_max_bound(e, flint.fmpq(1), 2, 0.02, 400) <= mpq(102, 100)
+    True
     """
     e_col, e_scale = _integer_column(e, n, bits, True)
     constant = isinstance(w2, flint.fmpq)
@@ -333,6 +338,14 @@ def homogeneous_distance_bound(hom_f: np.ndarray, hom_x: np.ndarray, rel: float 
     :data:`~exactcagd.composition.ball.PREC` significant bits (``"ball"``: a dyadic enclosure of
     every coefficient, as an Arb ball's ends), and on the exact coefficients only when that
     does not prove ``target`` or does not bound ``W`` away from zero (``"exact"``).
+
+    >>> from exactcagd import BezierCurve
+    >>> F = BezierCurve([[0, 0], [1, 2], [2, 0]], weights=[1, 2, 1])
+    >>> X = BezierCurve([[0, 0], [1, 1], [2, 0]])
+    >>> stats = {}
+    >>> r = homogeneous_distance_bound(F.homogeneous(), X.homogeneous(), target=1, stats=stats)
+    >>> mpq(5, 6) <= r <= 1, stats      # |F(1/2) - X(1/2)| = |(1, 4/3) - (1, 1/2)| = 5/6
+    (True, {'ball': 1})
     """
     e, w2, D = _squared_error(hom_f, hom_x)
     target2 = None if target is None else mpq(to_rational_array([target])[0]) ** 2
