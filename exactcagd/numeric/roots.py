@@ -83,8 +83,7 @@ class Root:
     t : float
         Float estimate of the root (from the float method; the enclosure midpoint
         when the enclosure came from the certification alone; with ``method="exact"``
-        the root correctly rounded, proven -- on the bisection fallback, when a float
-        Newton estimate is confirmed by exact signs).
+        the root correctly rounded, proven by exact or certain ball comparisons).
     interval : (float, float)
         ``lo <= hi``; proven to contain the roots it stands for.
     multiplicity : int
