@@ -33,7 +33,8 @@ HEAVY = ("sympy", "numpy", "flint", "gmpy2", "mpmath", "matplotlib")
 
 def _floors_declared() -> dict:
     floors = {}
-    deps = PYPROJECT["project"]["dependencies"] + PYPROJECT["project"]["optional-dependencies"]["plots"]
+    extras = PYPROJECT["project"]["optional-dependencies"]
+    deps = PYPROJECT["project"]["dependencies"] + extras["plots"] + extras["fast"]
     for dep in deps:
         m = re.fullmatch(r"([A-Za-z0-9_.-]+)>=([0-9.]+)(?:,<[0-9.]+)?(;.*)?", dep.replace(" ", ""))
         assert m, f"dependency without a floor: {dep}"
@@ -92,7 +93,7 @@ def test_gmpy2_float_of_mpq_is_correctly_rounded():
 def test_matplotlib_is_an_extra_and_license_ships():
     assert not any(d.startswith("matplotlib") for d in PYPROJECT["project"]["dependencies"])
     assert any(d.startswith("matplotlib") for d in PYPROJECT["project"]["optional-dependencies"]["test-core"])
-    assert "exactcagd[test-core]" in PYPROJECT["project"]["optional-dependencies"]["test"]
+    assert "exactcagd[test-core,fast]" in PYPROJECT["project"]["optional-dependencies"]["test"]  # the kernel is tested
     assert "MIT License" in (ROOT / "LICENSE").read_text()
     assert (ROOT / "exactcagd" / "py.typed").is_file()
     assert "py.typed" in PYPROJECT["tool"]["setuptools"]["package-data"]["exactcagd"]
