@@ -13,8 +13,8 @@ Hausdorff distance from above (every ``F(t)`` is within it of ``C(t)`` and conve
    Chebyshev-Lobatto parameters (parametric correspondence ``C(t) ~ F(t)``), end points
    interpolated; ``d = 3, 4, ...`` up to ``max_degree`` (and up to ``deg F`` for a polynomial
    ``F``, where ``d = deg F`` reproduces ``F``), the piece is bisected when no degree works.
-   The sampled errors of all degrees come from one matrix product; the lowest degree whose
-   sampled error is ``<= tol`` (and that certifies) is kept.
+   The sampled errors of four consecutive degrees come from one matrix product; the lowest
+   degree whose sampled error is ``<= tol`` (and that certifies) is kept.
 3. **Exact conversion.**  The interior float control points are converted to their exact
    binary values; the end points are the exact joint points ``S(joint)``, shared by the two
    neighbours, so the chain is C0 *exactly*.
@@ -220,9 +220,10 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     """``(ctrl, bound, decided_by)`` of the lowest degree that certifies ``<= tol``, or ``None``.
 
     The sampled errors of ``_DEGREE_BLOCK`` consecutive degrees come from one product
-    (:func:`_prediction_operator`); a degree whose error there is clearly above ``tol`` is
-    skipped, the others are fitted and re-measured one by one exactly as before, so the
-    selected degree is the same.
+    (:func:`_prediction_operator`); it differs from fitting each degree and measuring
+    (:func:`_sampled_error`) by rounding only, so a degree clearly above ``tol`` there is
+    skipped, one clearly below passes, and one within the rounding slack is re-measured:
+    the selected degree is the one the degree-by-degree loop selects.
     """
     s_fit, _, fit_bytes, check_bytes = _samples()
     n = hom.shape[0] - 1
@@ -244,17 +245,20 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
         for d, approx in zip(range(lo, hi + 1), quick):
             if approx > skip_above:
                 continue
-            found = _fit_degree(d, hom, p0, p1, tol, (target_fit, target_check, f0, f1), approx < pass_below)
+            try:
+                found = _fit_degree(d, hom, p0, p1, tol, (target_fit, target_check, f0, f1), approx < pass_below)
+            except WeightError:
+                return None
             if found is not None:
-                return found if found[0] is not None else None
+                return found
     return None
 
 
 def _fit_degree(d: int, hom, p0, p1, tol: mpq, floats: tuple, clearly_below: bool = False):
     """``(ctrl, bound, decided_by)`` when degree ``d`` passes the sampled test and certifies,
-    ``(None, None, None)`` when the weights are not bounded away from zero, else ``None``.
-    ``clearly_below``: the stacked estimate is below ``tol`` by more than rounding, so the
-    sampled test (re-measured otherwise) passes."""
+    else ``None`` (:class:`~exactcagd.errors.WeightError` when ``W`` is not bounded away from
+    zero).  ``clearly_below``: the stacked estimate is below ``tol`` by more than rounding,
+    so the sampled test (re-measured otherwise) passes."""
     target_fit, target_check, f0, f1 = floats
     fctrl = _least_squares(d, _samples()[0], target_fit, f0, f1)
     if not clearly_below and not _sampled_error(d, fctrl, target_fit, target_check) <= to_float(tol):
@@ -262,10 +266,7 @@ def _fit_degree(d: int, hom, p0, p1, tol: mpq, floats: tuple, clearly_below: boo
     ctrl = np.empty(fctrl.shape, dtype=object)
     ctrl[1:-1] = [[mpq(*x.as_integer_ratio()) for x in row] for row in fctrl[1:-1].tolist()]  # exact binary values
     ctrl[0], ctrl[-1] = list(p0), list(p1)
-    try:
-        bound, decided_by = certify(hom, ctrl, target=tol)
-    except WeightError:
-        return None, None, None
+    bound, decided_by = certify(hom, ctrl, target=tol)
     return (ctrl, bound, decided_by) if bound <= tol else None
 
 
