@@ -385,10 +385,11 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
     t_fit = time.perf_counter()
     degree = max(c.shape[0] - 1 for c in segments)
     # exact mpq control points built here (validated by construction): no re-validation
-    curves = [BezierCurve._trusted(bz.elevate(c, degree - (c.shape[0] - 1)), None) for c in segments]
+    nets = [bz.elevate(c, degree - (c.shape[0] - 1)) for c in segments]
+    curves = [BezierCurve._trusted(net, None) for net in nets]
     bound = max(max(bounds), _gap_bound(grid, dcurve, joints))
-    pairs = list(zip(curves[:-1], curves[1:])) + ([(curves[-1], curves[0])] if dcurve.closed and len(curves) > 1 else [])
-    angles = [_angle_deg(_tangent(a, 1), _tangent(b, 0)) for a, b in pairs]
+    pairs = list(zip(nets[:-1], nets[1:])) + ([(nets[-1], nets[0])] if dcurve.closed and len(nets) > 1 else [])
+    angles = [_angle_deg(a[-1] - a[-2], b[1] - b[0]) for a, b in pairs]  # end / start tangent directions
     t_end = time.perf_counter()
     return CurveOnSurface(
         segments=curves,
@@ -411,8 +412,3 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
         ends=ends,
         certified_by=stats,
     )
-
-
-def _tangent(curve: BezierCurve, end: int) -> tuple:
-    p = curve.control_points
-    return tuple(p[1][i] - p[0][i] for i in range(len(p[0]))) if end == 0 else tuple(p[-1][i] - p[-2][i] for i in range(len(p[0])))
