@@ -374,8 +374,8 @@ def _isqrt(a):
 
 
 def _icoords(a):
-    """Sum over the coordinate axis (axis 1, two coordinates)."""
-    return _up(a[:, 0] + a[:, 1])
+    """Sum over the last axis (two coordinates)."""
+    return _up(a[..., 0] + a[..., 1])
 
 
 def _float_net(hom, hf: np.ndarray | None = None) -> np.ndarray | None:
@@ -432,28 +432,27 @@ def _float_restrict(net: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray
 
 
 def _float_points(net, a, b, count: int):
-    """Intervals of the projected control points, shape ``(2, 2, N, count)`` (ends, coordinate,
-    piece, point; the last point repeated up to ``count``), and a mask of the pieces whose
-    weights are positive."""
-    hom = np.moveaxis(_float_restrict(net, a, b), 3, 1)  # (2, 3, N, n + 1): small axes first
-    if hom.shape[3] < count:
-        hom = np.concatenate([hom, np.repeat(hom[..., -1:], count - hom.shape[3], axis=3)], axis=3)
-    w = hom[:, 2:]
-    ok = (w[0, 0] < 0).all(axis=1)  # -lo < 0: lo > 0
+    """Intervals of the projected control points, shape ``(2, N, count, 2)`` (the last point
+    repeated up to ``count``), and a mask of the pieces whose weights are positive."""
+    hom = _float_restrict(net, a, b)
+    if hom.shape[2] < count:
+        hom = np.concatenate([hom, np.repeat(hom[:, :, -1:], count - hom.shape[2], axis=2)], axis=2)
+    w = hom[..., 2:]
+    ok = (w[0, ..., 0] < 0).all(axis=1)  # -lo < 0: lo > 0
     w = np.where(w[0] < 0, w, _col(_NEG, w.ndim - 1))
-    return _idiv_pos(hom[:, :2], w), ok
+    return _idiv_pos(hom[..., :2], w), ok
 
 
 def _float_directed(pa: np.ndarray, pb: np.ndarray):
     """Interval of ``max_k dist(Q^A_k, [b_0, b_1]) + delta_B`` for piece pairs at once (rows of
-    ``pa``, ``pb``: intervals of shape ``(2, 2, rows, points)``), and a mask of the rows where
+    ``pa``, ``pb``: intervals of shape ``(2, N, points, 2)``), and a mask of the rows where
     the chord is not degenerate in intervals.
 
     The distance to the chord's line is taken as ``|cross(q - b_0, e)| / |e|`` (``= |q - b_0|^2
     - ((q - b_0).e)^2 / |e|^2`` by Lagrange's identity, the exact code's form, with far less
     cancellation).
     """
-    b0, b1 = pb[..., :1], pb[..., -1:]
+    b0, b1 = pb[:, :, :1], pb[:, :, -1:]
     e = _isub(b1, b0)
     ee = _icoords(_isqr(e))
     ok = ee[0, :, 0] < 0
@@ -462,19 +461,20 @@ def _float_directed(pa: np.ndarray, pb: np.ndarray):
     s = _icoords(_imul(ap, e))
     near0 = _icoords(_isqr(ap))  # s <= 0: the nearest point is b_0
     near1 = _icoords(_isqr(bp))  # s >= |e|^2: b_1
-    e_swapped = e[:, ::-1]
+    e_swapped = e[..., ::-1]
     cross = _imul(ap, e_swapped)  # ap_x e_y, ap_y e_x
-    inner = _idiv_pos(_isqr(_isub(cross[:, 0], cross[:, 1])), ee)
+    inner = _idiv_pos(_isqr(_isub(cross[..., :1], cross[..., 1:])[..., 0]), ee)
     s_lo, s_hi, ee_lo, ee_hi = -s[0], s[1], -ee[0], ee[1]
     # the exact value is one of the three cases; take the cases the intervals do not exclude
     m0, m1, m2 = s_lo <= 0, s_hi >= ee_lo, (s_hi > 0) & (s_lo < ee_hi)
     neg_lo = np.minimum(np.minimum(np.where(m0, near0[0], np.inf), np.where(m1, near1[0], np.inf)), np.where(m2, inner[0], np.inf))
     hi = np.maximum(np.maximum(np.where(m0, near0[1], -np.inf), np.where(m1, near1[1], -np.inf)), np.where(m2, inner[1], -np.inf))
-    a_part = _pair(neg_lo.min(axis=-1), hi.max(axis=-1))
-    if pb.shape[-1] > 2:
-        cq = _imul(_isub(pb[..., 1:-1], b0), e_swapped)
-        d = _idiv_pos(_isqr(_isub(cq[:, 0], cq[:, 1])), ee)
-        delta = _pair(d[0].min(axis=-1), d[1].max(axis=-1))
+    neg_lo, hi = neg_lo.min(axis=1), hi.max(axis=1)
+    a_part = _pair(neg_lo, hi)
+    if pb.shape[2] > 2:
+        cq = _imul(_isub(pb[:, :, 1:-1], b0), e_swapped)
+        d = _idiv_pos(_isqr(_isub(cq[..., :1], cq[..., 1:])[..., 0]), ee)
+        delta = _pair(d[0].min(axis=1), d[1].max(axis=1))
     else:
         delta = np.zeros_like(a_part)
     return _iadd(_isqrt(a_part), _isqrt(delta)), ok
@@ -491,7 +491,7 @@ def float_piece_bounds(net_a, net_b, ta, tb, sa, sb):
         pa, ok_a = _float_points(net_a, ta, tb, count)
         pb, ok_b = _float_points(net_b, sa, sb, count)
         # both directions in one pass: rows A -> B, then B -> A
-        value, ok = _float_directed(np.concatenate([pa, pb], axis=2), np.concatenate([pb, pa], axis=2))
+        value, ok = _float_directed(np.concatenate([pa, pb], axis=1), np.concatenate([pb, pa], axis=1))
         N = len(ta)
         lo = np.maximum(-value[0, :N], -value[0, N:])
         hi = np.maximum(value[1, :N], value[1, N:])
