@@ -33,6 +33,8 @@ import contextlib
 import flint
 from gmpy2 import mpq
 
+from ..exact.algebraic import exact_dyadic
+
 __all__ = ["BALL", "EXACT", "PREC", "precision", "to_arb", "upper_rational", "lower_rational", "count"]
 
 #: the ball test decided
@@ -61,24 +63,18 @@ def to_arb(q) -> flint.arb:
     return flint.arb(flint.fmpq(int(q.numerator), int(q.denominator)))
 
 
-def _exact(x: flint.arb) -> mpq:
-    man, exp = x.man_exp()
-    man, exp = int(man), int(exp)
-    return mpq(man * 2**exp) if exp >= 0 else mpq(man, 2**-exp)
-
-
 def upper_rational(x: flint.arb) -> mpq | None:
     """An exact rational ``>= every point of the ball``; ``None`` for an unbounded ball."""
     if not x.is_finite():
         return None
-    return _exact(x.upper())
+    return exact_dyadic(x.upper())
 
 
 def lower_rational(x: flint.arb) -> mpq | None:
     """An exact rational ``<= every point of the ball``; ``None`` for an unbounded ball."""
     if not x.is_finite():
         return None
-    return _exact(x.lower())
+    return exact_dyadic(x.lower())
 
 
 def count(stats: dict | None, decided_by: str) -> None:

@@ -31,6 +31,7 @@ import flint
 from gmpy2 import mpq
 
 from ..errors import InputError
+from ..exact.algebraic import sign_at
 from ..exact.bernstein import as_coefficients, from_power, to_power
 from ..exact.scalars import rational_str
 
@@ -68,10 +69,10 @@ class IsolatingInterval:
         if lo == hi:
             return self
         poly = _nonzero_at_ends(self.poly, lo, hi)
-        s_lo = _sign_at(poly, lo)
+        s_lo = sign_at(poly, lo)
         while hi - lo >= width:
             mid = (lo + hi) / 2
-            s = _sign_at(poly, mid)
+            s = sign_at(poly, mid)
             if s == 0:
                 return IsolatingInterval(mid, mid, self.multiplicity, self.poly)
             if s == s_lo:
@@ -94,14 +95,9 @@ def _nonzero_at_ends(poly: flint.fmpz_poly, lo: mpq, hi: mpq) -> flint.fmpz_poly
     ``poly(lo) != 0``, and the open interval's root is a root of the quotient too.
     """
     for e in (lo, hi):
-        if _sign_at(poly, e) == 0:
+        if sign_at(poly, e) == 0:
             poly = poly // flint.fmpz_poly([-int(e.numerator), int(e.denominator)])
     return poly
-
-
-def _sign_at(poly: flint.fmpz_poly, x: mpq) -> int:
-    v = poly(flint.fmpq(int(x.numerator), int(x.denominator)))
-    return (v > 0) - (v < 0)
 
 
 def sign_variations(coeffs) -> int:
