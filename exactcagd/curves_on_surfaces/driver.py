@@ -93,9 +93,11 @@ class CurveOnSurface:
         ``D'(t)``).  ``False`` at joints carried by an isolating interval (irrational
         cuts), at stationary points, and at joints rounded by ``snap_bits``.
     certified_by : dict
-        How many of the accepted distance certificates were decided in ball arithmetic
-        (``"ball"``, python-flint ``arb``) and how many needed exact rationals (``"exact"``)
-        because the ball test was inconclusive (:mod:`exactcagd.composition.ball`).
+        How many of the accepted distance certificates (Hausdorff piece bounds) were decided
+        in enclosure arithmetic (``"ball"``: outward-rounded binary64 intervals for all pieces
+        of a bisection level at once, else a python-flint ``arb`` ball per piece) and how many
+        needed exact rationals (``"exact"``) because the enclosures were inconclusive
+        (:mod:`exactcagd.composition.ball`, :func:`.hausdorff.float_piece_bounds`).
     """
 
     segments: list
