@@ -357,9 +357,13 @@ def _imul(a, b):
 
 
 def _isqr(a):
-    sq = a * a  # lo^2, hi^2
-    small = np.where(a[0] <= 0, sq[0], np.where(a[1] <= 0, sq[1], 0.0))  # lo >= 0 / hi <= 0 / 0 inside
-    return _pair(-small, np.maximum(sq[0], sq[1]))
+    # |x| over the interval lies in [max(lo, -hi, 0), max(-lo, hi)]; square both, -lo first
+    out = np.empty_like(a)
+    np.maximum(np.maximum(-a[0], -a[1]), 0.0, out=out[0])
+    np.maximum(a[0], a[1], out=out[1])
+    out *= out
+    np.negative(out[0], out=out[0])
+    return _up(out)
 
 
 def _idiv_pos(a, b):
@@ -457,13 +461,18 @@ def _float_directed(pa: np.ndarray, pb: np.ndarray):
     ee = _icoords(_isqr(e))
     ok = ee[0, :, 0] < 0
     ee = np.where(ee[0] < 0, ee, _col(_NEG, ee.ndim - 1))
-    ap, bp = _isub(pa, b0), _isub(pa, b1)
+    count = pa.shape[2]
+    inner_b = pb.shape[2] > 2
+    # A's points and B's inner points share the chord: one pass for the distances to its line
+    q = np.concatenate([pa, pb[:, :, 1:-1]], axis=2) if inner_b else pa
+    aq = _isub(q, b0)
+    ap, bp = aq[:, :, :count], _isub(pa, b1)
     s = _icoords(_imul(ap, e))
-    near0 = _icoords(_isqr(ap))  # s <= 0: the nearest point is b_0
-    near1 = _icoords(_isqr(bp))  # s >= |e|^2: b_1
-    e_swapped = e[..., ::-1]
-    cross = _imul(ap, e_swapped)  # ap_x e_y, ap_y e_x
-    inner = _idiv_pos(_isqr(_isub(cross[..., :1], cross[..., 1:])[..., 0]), ee)
+    near = _icoords(_isqr(np.concatenate([ap, bp], axis=2)))
+    near0, near1 = near[:, :, :count], near[:, :, count:]  # s <= 0: nearest b_0; s >= |e|^2: b_1
+    cross = _imul(aq, e[..., ::-1])  # q_x e_y, q_y e_x
+    line = _idiv_pos(_isqr(_isub(cross[..., :1], cross[..., 1:])[..., 0]), ee)
+    inner = line[:, :, :count]
     s_lo, s_hi, ee_lo, ee_hi = -s[0], s[1], -ee[0], ee[1]
     # the exact value is one of the three cases; take the cases the intervals do not exclude
     m0, m1, m2 = s_lo <= 0, s_hi >= ee_lo, (s_hi > 0) & (s_lo < ee_hi)
@@ -471,9 +480,8 @@ def _float_directed(pa: np.ndarray, pb: np.ndarray):
     hi = np.maximum(np.maximum(np.where(m0, near0[1], -np.inf), np.where(m1, near1[1], -np.inf)), np.where(m2, inner[1], -np.inf))
     neg_lo, hi = neg_lo.min(axis=1), hi.max(axis=1)
     a_part = _pair(neg_lo, hi)
-    if pb.shape[2] > 2:
-        cq = _imul(_isub(pb[:, :, 1:-1], b0), e_swapped)
-        d = _idiv_pos(_isqr(_isub(cq[..., :1], cq[..., 1:])[..., 0]), ee)
+    if inner_b:
+        d = line[:, :, count:]
         delta = _pair(d[0].min(axis=1), d[1].max(axis=1))
     else:
         delta = np.zeros_like(a_part)
