@@ -76,7 +76,7 @@ class Approximant:
         dv = max(len(V), len(Wv)) - 1
         U, Wu = bz.elevate(U, du - len(U) + 1), bz.elevate(Wu, du - len(Wu) + 1)
         V, Wv = bz.elevate(V, dv - len(V) + 1), bz.elevate(Wv, dv - len(Wv) + 1)
-        cols = [bz.product(U, Wv), bz.product(V, Wu), bz.product(Wu, Wv)]
+        cols = [_times(U, Wv), _times(V, Wu), _times(Wu, Wv)]
         return np.stack(cols, axis=1)
 
     def image_hom(self, patch_hom: np.ndarray) -> np.ndarray:
@@ -142,6 +142,19 @@ class Approximant:
     def swapped(self) -> "Approximant":
         params = {k: v for k, v in self.params.items() if not k.startswith("_")}
         return Approximant(self.kind, self.v_map, self.u_map, params)
+
+
+def _times(a: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """Bernstein product ``a w``; with rational coefficients, a factor that is the constant 1
+    (all coefficients 1) only raises the degree (notes 2.5: the product with
+    ``sum_k B_k = 1`` is degree elevation).  Field coefficients keep the product (it returns
+    field numbers throughout)."""
+    if not any(isinstance(x, QuadraticNumber) for x in (*a, *w)):
+        if all(x == 1 for x in w):
+            return bz.elevate(a, len(w) - 1)
+        if all(x == 1 for x in a):
+            return bz.elevate(w, len(a) - 1)
+    return bz.product(a, w)
 
 
 def _interval(x, bits: int) -> tuple:
