@@ -227,3 +227,30 @@ def _restrict_coeffs(points, a, b):
     if a:
         _, rows = split(rows, a / b)
     return rows
+
+
+@pytest.mark.parametrize("kind", ["segment", "hyperbola", "parabola"])
+def test_domain_form_evaluates_to_the_coordinate_maps(kind):
+    """The planar homogeneous form (U W_v, V W_u, W_u W_v) of an approximant equals
+    (u(t), v(t)) = (U/W_u, V/W_v) at 9 rational parameters (reference: Fraction de Casteljau
+    of each map separately)."""
+    from exactcagd.curves_on_surfaces.approximants import hyperbola, parabola, segment
+
+    p0, p1 = (mpq(1, 10), mpq(1, 7)), (mpq(5, 9), mpq(8, 9))
+    a = {"segment": lambda: segment(p0, p1),
+         "hyperbola": lambda: hyperbola(p0, p1, (mpq(1, 3), mpq(1, 2))),
+         "parabola": lambda: parabola(p0, (mpq(0), mpq(1)), p1, (mpq(1), mpq(1)))}[kind]()  # Type 1: rational
+    assert a is not None and a.radicand is None
+
+    def value(coeffs, t):
+        level = [Fraction(int(mpq(c).numerator), int(mpq(c).denominator)) for c in coeffs]
+        while len(level) > 1:
+            level = [(1 - t) * x + t * y for x, y in zip(level[:-1], level[1:])]
+        return level[0]
+
+    hom = a.domain_hom()
+    for k in range(9):
+        t = Fraction(k, 8)
+        w = value(hom[:, 2], t)
+        assert value(hom[:, 0], t) / w == value(a.u_map[0], t) / value(a.u_map[1], t)
+        assert value(hom[:, 1], t) / w == value(a.v_map[0], t) / value(a.v_map[1], t)
