@@ -289,7 +289,7 @@ def _t_hyperbola(p0, p1, mid) -> Approximant | None:
 
 
 def _tangent_error(a: Approximant, d0, d1) -> float:
-    h = np.vectorize(float, otypes=[float])(a.domain_hom())
+    h = np.array([[float(x) for x in row] for row in a.domain_hom()])
     n = h.shape[0] - 1
     err = 0.0
     for end, d in ((0, d0), (1, d1)):
