@@ -254,3 +254,14 @@ def test_domain_form_evaluates_to_the_coordinate_maps(kind):
         w = value(hom[:, 2], t)
         assert value(hom[:, 0], t) / w == value(a.u_map[0], t) / value(a.u_map[1], t)
         assert value(hom[:, 1], t) / w == value(a.v_map[0], t) / value(a.v_map[1], t)
+
+
+def test_limits_beyond_the_float_range():
+    """A limit past the largest binary64 number (10^400) is met with the exact bound; a tiny
+    one (10^-400, below the smallest subnormal) is refused (reference: H = 1/8 from the
+    construction, an arc of apex height 1/8 over its chord)."""
+    a = BezierCurve([[0, 0], ["1/2", "1/4"], [1, 0]]).homogeneous()
+    b = BezierCurve([[0, 0], [1, 0]]).homogeneous()
+    bound = hd.hausdorff_bound(a, b, mpq(10) ** 400)
+    assert bound is not None and mpq(1, 8) <= bound <= mpq(1, 4)
+    assert hd.hausdorff_bound(a, b, mpq(1, 10**400)) is None

@@ -738,8 +738,14 @@ def _certify_window(hom_a, hom_b, balls_a, balls_b, piece, windows, limit, stats
 
 
 def _float_limits(limit: mpq) -> tuple[float, float]:
-    """Binary64 numbers ``lo <= limit <= hi`` (adjacent, or equal when ``limit`` is a float)."""
-    f = float(limit)
+    """Binary64 numbers ``lo <= limit <= hi`` (adjacent, or equal when ``limit`` is a float;
+    ``(largest float, inf)`` past the float range)."""
+    try:
+        f = float(limit)
+    except OverflowError:
+        f = np.inf
+    if f == np.inf:
+        return float(np.finfo(float).max), np.inf
     lo = f if mpq(f) <= limit else float(np.nextafter(f, -np.inf))
     hi = f if mpq(f) >= limit else float(np.nextafter(f, np.inf))
     return lo, hi
