@@ -492,7 +492,19 @@ def float_piece_bounds(net_a, net_b, ta, tb, sa, sb):
     """Intervals ``(lo, hi)`` containing the :func:`piece_bound` formula value of the pieces
     ``A[ta_k, tb_k]``, ``B[sa_k, sb_k]`` (``NaN`` where undecided), all pieces at once.
 
-    ``net_a``, ``net_b`` from :func:`_float_net`, parameters from :func:`_float_ends`.
+    The module's fat-line piece bound (Yang et al. (004) section 5, derivation in
+    ``proofs/yang_hausdorff.py``) in outward-rounded binary64 intervals.  ``net_a``,
+    ``net_b`` from :func:`_float_net`; parameters are binary64 numbers with ``1 - t``
+    exact (dyadic, :func:`_float_ends`).
+
+    >>> import numpy as np
+    >>> from exactcagd import BezierCurve
+    >>> a = BezierCurve([[0, 0], ["1/2", 0], [1, 0]]).homogeneous()
+    >>> b = BezierCurve([[0, "3/1000"], [1, "3/1000"]]).homogeneous()   # H(A, B) = 3/1000
+    >>> ends = np.array([0.0]), np.array([1.0])
+    >>> lo, hi = float_piece_bounds(_float_net(a), _float_net(b), *ends, *ends)
+    >>> bool(lo[0] <= 0.003 <= hi[0] and hi[0] - lo[0] < 1e-15)
+    True
     """
     count = max(net_a.shape[1], net_b.shape[1])
     with np.errstate(all="ignore"):
@@ -642,7 +654,15 @@ def hausdorff_bound(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512,
 
 
 def hausdorff_certificate(hom_a, hom_b, limit, pieces: int = 4, max_pieces: int = 512, stats: dict | None = None):
-    """:func:`hausdorff_bound` as a :class:`Certified` (its value computed on demand), or ``None``."""
+    """:func:`hausdorff_bound` as a :class:`Certified` (its value computed on demand), or ``None``.
+
+    >>> from exactcagd import BezierCurve
+    >>> a = BezierCurve([[0, 0], ["1/2", "1/4"], [1, 0]]).homogeneous()   # apex height 1/8
+    >>> b = BezierCurve([[0, 0], [1, 0]]).homogeneous()
+    >>> c = hausdorff_certificate(a, b, "1/2")
+    >>> bool(c.lower <= c.value() <= c.upper <= mpq(1, 2)), bool(c.value() >= mpq(1, 8))
+    (True, True)
+    """
     limit = to_rational(limit, where="limit")
     hf_a, hf_b = _float_hom(hom_a), _float_hom(hom_b)
     if _float_estimate(hf_a, hf_b, 33) > to_float(limit) * (1 + 1e-9):
