@@ -265,3 +265,31 @@ def test_limits_beyond_the_float_range():
     bound = hd.hausdorff_bound(a, b, mpq(10) ** 400)
     assert bound is not None and mpq(1, 8) <= bound <= mpq(1, 4)
     assert hd.hausdorff_bound(a, b, mpq(1, 10**400)) is None
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(0, 3), st.integers(0, 3), st.booleans(), st.randoms(use_true_random=False))
+def test_flint_bernstein_product_is_the_product(m, n, field, rng):
+    """bernstein_product (flint scaled forms) evaluates, at m + n + 1 rational parameters, to
+    the product of the two factors' values (de Casteljau in QuadraticNumber arithmetic):
+    two polynomials of degree m + n that agree there are equal."""
+    from exactcagd.exact.quadratic import QuadraticNumber
+    from exactcagd.reparam._mechanism import bernstein_product
+
+    def q():
+        return mpq(rng.randint(-99, 99), rng.randint(1, 50))
+
+    a = [QuadraticNumber(q(), q(), 7) if field and rng.random() < 0.6 else q() for _ in range(m + 1)]
+    b = [q() for _ in range(n + 1)]
+    c = bernstein_product(a, b)
+    assert len(c) == m + n + 1
+
+    def value(coeffs, t):
+        level = list(coeffs)
+        while len(level) > 1:
+            level = [(1 - t) * x + t * y for x, y in zip(level[:-1], level[1:])]
+        return level[0]
+
+    for k in range(m + n + 1):
+        t = mpq(k + 1, m + n + 3)
+        assert value(list(c), t) == value(a, t) * value(b, t)

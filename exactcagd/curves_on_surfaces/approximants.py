@@ -43,6 +43,7 @@ from gmpy2 import mpq
 from ..exact import bernstein as bz
 from ..exact.quadratic import QuadraticNumber, field_of, sqrt_rational
 from ..reparam import substitute_curve
+from ..reparam._mechanism import bernstein_product
 
 __all__ = ["Approximant", "s_parabola", "t_parabola", "parabola", "hyperbola", "segment"]
 
@@ -145,16 +146,17 @@ class Approximant:
 
 
 def _times(a: np.ndarray, w: np.ndarray) -> np.ndarray:
-    """Bernstein product ``a w``; with rational coefficients, a factor that is the constant 1
-    (all coefficients 1) only raises the degree (notes 2.5: the product with
-    ``sum_k B_k = 1`` is degree elevation).  Field coefficients keep the product (it returns
-    field numbers throughout)."""
+    """Bernstein product ``a w`` (flint, :func:`exactcagd.reparam.bernstein_product`); with
+    rational coefficients, a factor that is the constant 1 (all coefficients 1) only raises
+    the degree (notes 2.5: the product with ``sum_k B_k = 1`` is degree elevation)."""
     if not any(isinstance(x, QuadraticNumber) for x in (*a, *w)):
         if all(x == 1 for x in w):
             return bz.elevate(a, len(w) - 1)
         if all(x == 1 for x in a):
             return bz.elevate(w, len(a) - 1)
-    return bz.product(a, w)
+    if all(isinstance(x, (type(mpq(0)), int, QuadraticNumber)) for x in (*a, *w)):
+        return bernstein_product(a, w)
+    return bz.product(a, w)  # pragma: no cover - other scalar types
 
 
 def _interval(x, bits: int) -> tuple:

@@ -33,7 +33,7 @@ from ..exact import bernstein as bz
 from ..exact.quadratic import QuadraticNumber, field_of
 from ..exact.scalars import to_fmpq as _fq
 
-__all__ = ["substitute_curve", "substitute_tensor", "bernstein_of_map"]
+__all__ = ["substitute_curve", "substitute_tensor", "bernstein_of_map", "bernstein_product"]
 
 
 def _as_array(c, ndim: int) -> np.ndarray:
@@ -165,6 +165,21 @@ def _unscale(p, D) -> list:
         else:
             out.append(x)
     return out
+
+
+def bernstein_product(a, b) -> np.ndarray:
+    """Bernstein product of two coefficient lists with entries in ``Q`` or one ``Q(sqrt(D))``,
+    as a product of scaled forms in flint (the route of :func:`substitute_curve`): the values
+    of :func:`exactcagd.exact.bernstein.product` (notes 9.3), entries whose ``sqrt(D)`` part
+    is zero returned as rationals.
+
+    >>> from gmpy2 import mpq
+    >>> [str(x) for x in bernstein_product([mpq(0), mpq(1)], [mpq(1), mpq(3)])]
+    ['0', '1/2', '3']
+    """
+    D = field_of([*a, *b])
+    D = None if D is None else mpz(D)
+    return np.array(_unscale(_mul(_pair(list(a), D), _pair(list(b), D), D), D), dtype=object)
 
 
 def _substitute_curve_fast(hom: np.ndarray, u_map, v_map):
