@@ -215,3 +215,52 @@ def test_a_tie_the_rounded_coefficients_cannot_prove_is_decided_exactly():
     assert homogeneous_distance_bound(hom_of(tol), hom_c, target=tol, stats=stats) == tol
     assert stats == {ball.EXACT: 1}
     assert homogeneous_distance_bound(hom_of(tol * (1 + Fr(1, 2**50))), hom_c, target=tol) > tol
+
+
+def _scaled_value(p, degree, t):
+    """A scaled Bernstein form ``sum c_i x^i`` of degree ``degree`` (flint ``fmpq_poly``, or an
+    ``fmpq`` constant ``c``: the polynomial ``c``) at ``t``: ``sum c_i t^i (1 - t)^(degree - i)``."""
+    if not hasattr(p, "coeffs"):
+        return Fr(int(p.p), int(p.q))
+    return sum(Fr(int(c.p), int(c.q)) * t**i * (1 - t) ** (degree - i) for i, c in enumerate(p.coeffs()))
+
+
+@st.composite
+def weighted_pairs(draw):
+    """Two curves of one dimension, each with unit, constant (!= 1) or varying weights."""
+    dim = draw(st.integers(1, 3))
+
+    def curve():
+        n = draw(st.integers(0, 5))
+        pts = [[draw(coord) for _ in range(dim)] for _ in range(n + 1)]
+        kind = draw(st.sampled_from(["unit", "constant", "varying"]))
+        c = draw(weight)
+        ws = [Fr(1)] * (n + 1) if kind == "unit" else [c] * (n + 1) if kind == "constant" else [draw(weight) for _ in range(n + 1)]
+        return pts, ws
+
+    return curve(), curve()
+
+
+@settings(max_examples=60, deadline=None)
+@given(weighted_pairs())
+def test_squared_error_is_the_squared_distance_in_both_input_forms(pair):
+    """``e / w2`` of ``_squared_error`` at rational t is ``|F(t) - X(t)|^2`` (Fraction reference),
+    for object arrays and for their integer form (ScaledBernstein): same canonical polynomials."""
+    import numpy as np
+    from gmpy2 import mpq
+
+    from exactcagd.composition import distance_bound as module
+    from exactcagd.composition.fast import ScaledBernstein
+
+    (pf, wf), (px, wx) = pair
+
+    def hom(pts, ws):
+        return np.array([[mpq(w * x) for x in p] + [mpq(w)] for p, w in zip(pts, ws)], dtype=object)
+
+    hf, hx = hom(pf, wf), hom(px, wx)
+    e, w2, D = module._squared_error(hf, hx)
+    e2, w22, D2 = module._squared_error(ScaledBernstein.from_homogeneous(hf), ScaledBernstein.from_homogeneous(hx))
+    assert (e, w2, D) == (e2, w22, D2) and e.denom() == e2.denom()
+    for t in (Fr(0), Fr(1, 3), Fr(5, 7), Fr(1)):
+        a, b = _point(pf, wf, t), _point(px, wx, t)
+        assert _scaled_value(e, D, t) / _scaled_value(w2, D, t) == sum((x - y) ** 2 for x, y in zip(a, b))

@@ -104,3 +104,43 @@ def test_planted_bound_through_the_public_route():
     curve = np.array([[mpq(0), mpq(0), mpq(1)]], dtype=object)
     hom = compose_homogeneous_fast(net, curve)
     assert hom.shape == (1, 3) and list(hom[0]) == list(net[0, 0])
+
+
+# ----------------------------------------------------------------------------- the integer form
+def _fraction_de_casteljau_halves(column):
+    """Bernstein coefficients on [0, 1/2] and [1/2, 1] by the de Casteljau triangle in Fractions."""
+    from fractions import Fraction
+
+    level = [Fraction(int(c.numerator), int(c.denominator)) for c in column]
+    left, right = [level[0]], [level[-1]]
+    while len(level) > 1:
+        level = [(a + b) / 2 for a, b in zip(level[:-1], level[1:])]
+        left.append(level[0])
+        right.append(level[-1])
+    return left, right[::-1]
+
+
+@settings(max_examples=60, deadline=None)
+@given(net_and_curve())
+def test_scaled_form_reads_back_and_halves_like_de_casteljau(data):
+    """compose_scaled is the composition (sympy expansion), read back as mpq; its halves are
+    the Fraction de Casteljau halves at 1/2; its floats are the correctly rounded Fractions;
+    from_homogeneous gives the same rationals back."""
+    from fractions import Fraction
+
+    from exactcagd.composition.fast import ScaledBernstein, compose_scaled
+
+    net, curve = data
+    image = compose_scaled(net, curve)
+    hom = image.homogeneous()
+    for k, ref in enumerate(_reference_columns(net, curve)):
+        assert _bernstein_poly(hom[:, k]) == ref
+    assert [list(image.row(r)) for r in (0, -1)] == [list(hom[0]), list(hom[-1])]
+    fl = image.floats()
+    assert [[float(Fraction(int(x.numerator), int(x.denominator))) for x in row] for row in hom.tolist()] == fl.tolist()
+    for half, which in zip(image.halves(), (0, 1)):
+        got = half.homogeneous()
+        for k in range(hom.shape[1]):
+            assert [Fraction(int(x.numerator), int(x.denominator)) for x in got[:, k]] == _fraction_de_casteljau_halves(hom[:, k])[which]
+    again = ScaledBernstein.from_homogeneous(hom)
+    assert (again.homogeneous() == hom).all()

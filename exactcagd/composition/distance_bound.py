@@ -51,7 +51,7 @@ from ..exact import bernstein as bz
 from ..exact.scalars import from_fmpq, to_rational_array
 from ..geometry.bezier_curve import BezierCurve
 from . import ball
-from .fast import _binomials, _fmpq, compose_homogeneous_fast, scaled
+from .fast import ScaledBernstein, _binomials, _fmpq, _ones, compose_homogeneous_fast
 
 __all__ = [
     "bernstein_on",
@@ -102,33 +102,42 @@ def _bernstein_on_fmpq(power: flint.fmpq_poly, n: int, a, b) -> list:
     return [c / bz.binomial(n, i) for i, c in enumerate(hat)]
 
 
-def _squared_error(hom_f: np.ndarray, hom_x: np.ndarray):
+def _squared_error(hom_f, hom_x):
     """``(e, w2, D)``: scaled Bernstein forms (flint ``fmpq_poly``, degree ``D``) of the squared error.
 
-    ``hom_f = (N, W)`` and ``hom_x = (X Xw, Xw)`` are homogeneous Bernstein coefficients.
-    In general ``e = |N Xw - W X|^2`` and ``w2 = (W Xw)^2`` (``D = 2 (n + k)``).  When both
-    weights are constant (two polynomial curves) the difference needs no common denominator:
-    ``e = |N / W - X|^2`` with both elevated to ``m = max(n, k)`` and ``w2`` is the constant
-    ``1`` (an ``fmpq``), ``D = 2 m`` -- the same function, of a lower degree.
+    ``hom_f = (N, W)`` and ``hom_x = (X Xw, Xw)`` are homogeneous Bernstein coefficients
+    (object arrays, or their integer form :class:`~.fast.ScaledBernstein`, e.g. straight from
+    the composition).  In general ``e = |N Xw - W X|^2`` and ``w2 = (W Xw)^2``
+    (``D = 2 (n + k)``).  When both weights are constant (two polynomial curves) the
+    difference needs no common denominator: ``e = |N / W - X|^2`` with both elevated to
+    ``m = max(n, k)`` and ``w2`` is the constant ``1`` (an ``fmpq``), ``D = 2 m`` -- the same
+    function, of a lower degree.  The products run on the integer numerators (one
+    denominator per curve); ``e`` and ``w2`` are canonical, so they do not depend on the
+    input's form.
     """
-    n, k = hom_f.shape[0] - 1, hom_x.shape[0] - 1
-    wf, wx = hom_f[:, -1], hom_x[:, -1]
-    if all(x == wf[0] for x in wf) and all(x == wx[0] for x in wx):
+    f = hom_f if isinstance(hom_f, ScaledBernstein) else ScaledBernstein.from_homogeneous(hom_f)
+    x = hom_x if isinstance(hom_x, ScaledBernstein) else ScaledBernstein.from_homogeneous(hom_x)
+    n, k = f.degree, x.degree
+    const_f, const_x = f.constant_weight(), x.constant_weight()
+    if const_f is not None and const_x is not None:
+        # N_c / W = A_c / a_f in scaled form (W = a_f / den_f), the same for X; elevation to m
+        # multiplies a scaled form by (1 + x)^(m - degree)
         m = max(n, k)
-        up_f, up_x = flint.fmpq_poly([1, 1]) ** (m - n), flint.fmpq_poly([1, 1]) ** (m - k)
-        f_scale, x_scale = 1 / _fmpq(wf[0]), 1 / _fmpq(wx[0])
-        err = flint.fmpq_poly([])
-        for c in range(hom_f.shape[1] - 1):
-            diff = scaled(hom_f[:, c]) * up_f * f_scale - scaled(hom_x[:, c]) * up_x * x_scale
+        a_f, a_x = int(const_f[0]), int(const_x[0])
+        up_f, up_x = _ones(m - n) * a_x, _ones(m - k) * a_f
+        err = flint.fmpz_poly()
+        for col_f, col_x in zip(f.columns, x.columns):
+            diff = col_f * up_f - col_x * up_x
             err += diff * diff
-        return err, flint.fmpq(1), 2 * m
-    fw, xw = scaled(wf), scaled(wx)
-    err = flint.fmpq_poly([])
-    for c in range(hom_f.shape[1] - 1):
-        diff = scaled(hom_f[:, c]) * xw - fw * scaled(hom_x[:, c])
+        return flint.fmpq_poly(err, (a_f * a_x) ** 2), flint.fmpq(1), 2 * m
+    fw, xw = f.weight_poly(), x.weight_poly()
+    err = flint.fmpz_poly()
+    for col_f, col_x in zip(f.columns, x.columns):
+        diff = col_f * xw - fw * col_x
         err += diff * diff
-    w2 = fw * fw * xw * xw
-    return err, w2, 2 * (n + k)
+    den = int(f.denominator * x.denominator) ** 2
+    w = fw * xw
+    return flint.fmpq_poly(err, den), flint.fmpq_poly(w * w, den), 2 * (n + k)
 
 
 # ----------------------------------------------------------------------------- integer bisection

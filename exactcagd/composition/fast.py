@@ -45,7 +45,7 @@ from ..exact import bernstein as bz
 from ..exact.scalars import to_fmpq as _fmpq
 from ..exact.scalars import to_rational
 
-__all__ = ["compose_homogeneous_fast", "scaled", "unscaled"]
+__all__ = ["ScaledBernstein", "compose_homogeneous_fast", "compose_scaled", "scaled", "unscaled"]
 
 _MPQ = type(mpq(0))
 
@@ -138,27 +138,42 @@ def _balanced_digits(total: flint.fmpz_poly, bits: int, count: int, length: int)
     (coefficient ``r`` is ``sum_k a_k,r 2^(bits k)`` with ``|a_k,r| < 2^(bits-1)``), as
     ``count`` lists of ``length`` flint integers (``a_k,0 .. a_k,length-1``).
 
+    >>> _balanced_digits(flint.fmpz_poly([-3 + 5 * 2**4]), 4, 2, 1)
+    [[-3], [5]]
+    """
+    out = []
+    for digits in _balanced_digit_polys(total, bits, count, length):
+        coeffs = digits.coeffs()
+        out.append(coeffs + [flint.fmpz(0)] * (length - len(coeffs)))
+    return out
+
+
+def _balanced_digit_polys(total: flint.fmpz_poly, bits: int, count: int, length: int) -> list:
+    """:func:`_balanced_digits` as ``count`` integer polynomials (digit ``k`` of coefficient ``r``
+    is the coefficient ``r`` of polynomial ``k``).
+
     Coefficient-wise in flint: with ``off = 2^(bits-1) (1 + 2^bits + ... )`` added to every
     coefficient, digit ``k`` of ``T + off`` is ``a_k,r + 2^(bits-1)``, in ``[0, 2^bits)``.
 
-    >>> _balanced_digits(flint.fmpz_poly([-3 + 5 * 2**4]), 4, 2, 1)
-    [[-3], [5]]
+    >>> _balanced_digit_polys(flint.fmpz_poly([-3 + 5 * 2**4, 1]), 4, 2, 2)
+    [x + (-3), 5]
     """
     ones = flint.fmpz_poly([1] * length)
     full = 1 << bits
     half = full >> 1
     shifted = total + ones * sum(half << (bits * k) for k in range(count))
     half_poly = ones * half
-    out = []
-    for k in range(count):
-        digits = ((shifted // (1 << (bits * k))) if k else shifted) % full - half_poly
-        coeffs = digits.coeffs()
-        out.append(coeffs + [flint.fmpz(0)] * (length - len(coeffs)))
-    return out
+    return [((shifted // (1 << (bits * k))) if k else shifted) % full - half_poly for k in range(count)]
 
 
 def _flint_route(net: np.ndarray, curve: np.ndarray) -> np.ndarray:
-    """The formula of the module docstring in integer arithmetic, all coordinates at once.
+    """The formula of the module docstring in integer arithmetic (:func:`compose_scaled`),
+    read as ``mpq`` Bernstein coefficients."""
+    return compose_scaled(net, curve).homogeneous()
+
+
+def compose_scaled(net: np.ndarray, curve: np.ndarray) -> "ScaledBernstein":
+    """``F(K(t))`` as integer scaled Bernstein forms over one denominator (no ``mpq``).
 
     Every coordinate ``k`` of the result is ``A_k = sum_ij C(l,i) C(m,j) h_ijk b_i c_j``
     with the integer scaled forms ``b_i = x^i (w - x)^(l-i)``, ``c_j = y^j (w - y)^(m-j)``
@@ -169,20 +184,27 @@ def _flint_route(net: np.ndarray, curve: np.ndarray) -> np.ndarray:
     ``P_ij = C(l,i) C(m,j) sum_k h_ijk 2^(B k)`` (Kronecker substitution in the values):
     ``T = sum_j c_j sum_i b_i P_ij`` then has the coefficients ``T_r = sum_k A_k,r 2^(B k)``,
     and ``A_k,r`` is the k-th balanced base-``2^B`` digit of ``T_r`` since
-    ``|A_k,r| < 2^(B-1)`` (:func:`_digit_bits`).  One ``mpq`` per output coefficient
-    remains: the Bernstein coefficient ``A_k,r / (D d^(l+m) C(R, r))``.
+    ``|A_k,r| < 2^(B-1)`` (:func:`_digit_bits`).  The Bernstein coefficient is
+    ``A_k,r / (D d^(l+m) C(R, r))`` (:class:`ScaledBernstein`); a polynomial surface and
+    curve give the weight ``1`` without computing it.
+
+    Parameters and the curve's meaning as in :func:`compose_homogeneous_fast`.
+
+    >>> from exactcagd.exact.scalars import to_rational_array
+    >>> net = to_rational_array([[[0, 1], [0, 1]], [[1, 1], [1, 1]]])    # F(u, v) = u
+    >>> image = compose_scaled(net, to_rational_array([[0, 0, 1], [1, 1, 1]]))
+    >>> image.columns, int(image.denominator), image.weight is None  # 0 B_0 + 1/2 B_1 + B_2: 2 x (1/2) = 1
+    ([x^2 + x], 1, True)
     """
     l, m = net.shape[0] - 1, net.shape[1] - 1
     n = curve.shape[0] - 1
     out_degree = n * (l + m)
     dims = net.shape[2]
     rows = net.tolist()  # nested lists: item access without numpy indexing
-    result = np.empty((out_degree + 1, dims), dtype=object)
     computed = dims
     if all(p[-1] == 1 for row in rows for p in row) and all(x == 1 for x in curve[:, 2].tolist()):
         # polynomial surface and curve: the weight sum_ij B_i(X, W - X) B_j(Y, W - Y) = W^(l+m) = 1
         computed = dims - 1
-        result[:, -1] = mpq(1)
     # the curve: integer scaled Bernstein forms x, y, w over one common denominator d
     values, d = _integers(curve.ravel().tolist())
     binomials = _binomials(n)
@@ -193,11 +215,148 @@ def _flint_route(net: np.ndarray, curve: np.ndarray) -> np.ndarray:
     h, den = _integers([p[k] for row in rows for p in row for k in range(computed)])
     bits = _digit_bits(h, norm_x, norm_y, norm_w, l, m)
     total = _packed_sum(_basis(x, w - x, l), _basis(y, w - y, m), h, computed, bits)
-    scale = den * d ** (l + m)
-    denominators = [scale * bc for bc in _binomials(out_degree)]
-    for k, digits in enumerate(_balanced_digits(total, bits, computed, out_degree + 1)):
-        result[:, k] = [mpq(int(a), q) for a, q in zip(digits, denominators)]
-    return result
+    polys = _balanced_digit_polys(total, bits, computed, out_degree + 1)
+    if computed == dims:
+        return ScaledBernstein(polys[:-1], polys[-1], den * d ** (l + m), out_degree)
+    return ScaledBernstein(polys, None, den * d ** (l + m), out_degree)
+
+
+class ScaledBernstein:
+    """A homogeneous Bézier curve ``(W F, W)`` of degree ``R`` held as integer polynomials.
+
+    Column ``k`` is an integer polynomial ``A_k`` such that ``A_k / denominator`` is the
+    scaled Bernstein form ``sum_r C(R, r) b_r x^r`` of the coordinate (module docstring), so
+    its Bernstein coefficients are ``b_r = A_k,r / (denominator C(R, r))``.  This is what the
+    fast route computes (:func:`compose_scaled`); consumers that multiply Bernstein
+    polynomials (the fit route's certificate, :mod:`.distance_bound`) use it directly, and
+    ``mpq`` coefficients are made only on request (:meth:`homogeneous`, :meth:`row`).
+
+    Attributes
+    ----------
+    columns : list of ``flint.fmpz_poly``
+        The coordinates ``W F_k`` (all but the weight).
+    weight : ``flint.fmpz_poly`` or None
+        The weight ``W``; ``None`` when it is the constant 1 (a polynomial curve).
+    denominator : int
+        Common positive denominator.
+    degree : int
+
+    >>> h = ScaledBernstein.from_homogeneous(np.array([[mpq(1, 2), 1], [mpq(0), 1], [mpq(1), 1]], dtype=object))
+    >>> h.columns, int(h.denominator), h.weight is None  # (1/2) C(2,0) + 0 + 1 C(2,2) x^2, over 2
+    ([2*x^2 + 1], 2, True)
+    >>> [str(x) for x in h.homogeneous()[:, 0]]
+    ['1/2', '0', '1']
+    """
+
+    __slots__ = ("columns", "weight", "denominator", "degree", "_hom")
+
+    def __init__(self, columns: list, weight, denominator, degree: int):
+        self.columns = columns
+        self.weight = weight
+        self.denominator = denominator
+        self.degree = degree
+        self._hom = None
+
+    @classmethod
+    def from_homogeneous(cls, hom: np.ndarray) -> "ScaledBernstein":
+        """From homogeneous Bernstein coefficients ``(W F, W)`` (object array of rationals, at
+        least one row); a weight column of ones becomes ``weight = None``."""
+        rows = hom.tolist()
+        degree, dims = len(rows) - 1, len(rows[0])
+        unit = all(row[-1] == 1 for row in rows)
+        computed = dims - 1 if unit else dims
+        values, den = _integers([row[k] for k in range(computed) for row in rows])  # column-major
+        binomials = _binomials(degree)
+        polys = [flint.fmpz_poly([int(values[k * (degree + 1) + r] * binomials[r]) for r in range(degree + 1)])
+                 for k in range(computed)]
+        if unit:
+            return cls(polys, None, den, degree)
+        return cls(polys[:-1], polys[-1], den, degree)
+
+    def weight_poly(self) -> flint.fmpz_poly:
+        """The weight's integer scaled form over :attr:`denominator` (``denominator (1 + x)^R``
+        for the unit weight)."""
+        if self.weight is None:
+            return _ones(self.degree) * int(self.denominator)
+        return self.weight
+
+    def constant_weight(self):
+        """``(a, c)`` with every Bernstein coefficient of the weight ``a / c`` when they are all
+        equal (``c = denominator``), else ``None``: ``W = a (1 + x)^R / c`` in scaled form."""
+        if self.weight is None:
+            return self.denominator, self.denominator
+        first = self.weight[0]
+        return (first, self.denominator) if self.weight == _ones(self.degree) * first else None
+
+    def homogeneous(self) -> np.ndarray:
+        """The ``mpq`` Bernstein coefficients ``(W F, W)``, shape ``(R + 1, k + 1)`` (cached;
+        one canonical ``mpq`` per coefficient)."""
+        if self._hom is None:
+            n = self.degree
+            cols = self.columns if self.weight is None else self.columns + [self.weight]
+            out = np.empty((n + 1, len(self.columns) + 1), dtype=object)
+            denominators = [self.denominator * bc for bc in _binomials(n)]
+            for k, poly in enumerate(cols):
+                coeffs = poly.coeffs()
+                out[:, k] = [mpq(int(a), q) for a, q in zip(coeffs, denominators)] + [mpq(0)] * (n + 1 - len(coeffs))
+            if self.weight is None:
+                out[:, -1] = mpq(1)
+            self._hom = out
+        return self._hom
+
+    def row(self, r: int) -> list:
+        """Homogeneous row ``r`` as ``mpq`` (``r = 0`` or ``-1``: the end points' ``(W F, W)``)."""
+        if self._hom is not None:
+            return list(self._hom[r])
+        r = r % (self.degree + 1)
+        q = self.denominator * _binomials(self.degree)[r]
+        out = [mpq(int(p[r]), q) for p in self.columns]
+        return out + [mpq(1) if self.weight is None else mpq(int(self.weight[r]), q)]
+
+    def halves(self) -> tuple["ScaledBernstein", "ScaledBernstein"]:
+        """The curve on ``[0, 1/2]`` and on ``[1/2, 1]``, each reparametrized to [0, 1] (de
+        Casteljau at ``1/2``, notes 2.3), in integers.
+
+        In scaled form (``x = t / (1 - t)``) the left half of ``A`` is
+        ``sum_r A_r x^r (2 + x)^(R - r) / 2^R = rev(rev(A)(1 + 2x)) / 2^R`` and the right half
+        ``A(1 + 2x) / 2^R`` (``rev`` the reversal at degree ``R``, which reverses the Bernstein
+        coefficients): two Taylor-type substitutions per column, no rational arithmetic.
+
+        >>> h = ScaledBernstein.from_homogeneous(np.array([[mpq(0), 1], [mpq(1), 1]], dtype=object))
+        >>> [[str(x) for x in half.homogeneous()[:, 0]] for half in h.halves()]
+        [['0', '1/2'], ['1/2', '1']]
+        """
+        n = self.degree
+        sub = flint.fmpz_poly([1, 2])
+        den = self.denominator << n
+
+        def reverse(p):
+            c = p.coeffs()
+            return flint.fmpz_poly((c + [0] * (n + 1 - len(c)))[::-1])
+
+        cols = self.columns if self.weight is None else self.columns + [self.weight]
+        left = [reverse(reverse(p)(sub)) for p in cols]
+        right = [p(sub) for p in cols]
+        if self.weight is None:
+            return ScaledBernstein(left, None, den, n), ScaledBernstein(right, None, den, n)
+        return ScaledBernstein(left[:-1], left[-1], den, n), ScaledBernstein(right[:-1], right[-1], den, n)
+
+    def floats(self) -> np.ndarray:
+        """Binary64 Bernstein coefficients ``(W F, W)``, each correctly rounded (Python's
+        integer true division), shape ``(R + 1, k + 1)``."""
+        n = self.degree
+        out = np.ones((n + 1, len(self.columns) + 1))
+        denominators = [int(self.denominator * bc) for bc in _binomials(n)]
+        for k, poly in enumerate(self.columns if self.weight is None else self.columns + [self.weight]):
+            coeffs = poly.coeffs()
+            out[:, k] = [int(a) / q for a, q in zip(coeffs, denominators)] + [0.0] * (n + 1 - len(coeffs))
+        return out
+
+
+@lru_cache(maxsize=256)
+def _ones(n: int) -> flint.fmpz_poly:
+    """``(1 + x)^n``: the scaled Bernstein form of the constant 1 at degree ``n``."""
+    return flint.fmpz_poly(list(_binomials(n)))
 
 
 def _bernstein_route(net: np.ndarray, curve: np.ndarray) -> np.ndarray:

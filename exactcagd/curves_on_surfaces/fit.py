@@ -8,7 +8,10 @@ Hausdorff distance from above (every ``F(t)`` is within it of ``C(t)`` and conve
 1. **Exact image.**  The domain curve is cut at its own knots and at knot-line crossings of
    the surface (:class:`~.domain.DomainCurve`; its monotonicity cuts are not needed here and
    are dropped), and every piece is composed exactly with its patch
-   (:func:`exactcagd.composition.fast.compose_homogeneous_fast`, degree ``N (l + m)``).
+   (:func:`exactcagd.composition.fast.compose_scaled`, degree ``N (l + m)``), kept as
+   integer polynomials (:class:`~exactcagd.composition.fast.ScaledBernstein`): the
+   certificate multiplies them as they are, the fit reads their floats, and only the end
+   points become ``mpq``.
 2. **Fit (binary64).**  Least squares of a degree-``d`` Bézier curve to ``F`` at
    Chebyshev-Lobatto parameters (parametric correspondence ``C(t) ~ F(t)``), end points
    interpolated; ``d = 3, 4, ...`` up to ``max_degree`` (and up to ``deg F`` for a polynomial
@@ -51,7 +54,7 @@ from gmpy2 import mpq
 from ..composition import ball
 from ..composition.cubic_approx import bernstein_basis_float
 from ..composition.distance_bound import homogeneous_distance_bound, sqrt_upper
-from ..composition.fast import compose_homogeneous_fast
+from ..composition.fast import ScaledBernstein, compose_scaled
 from ..errors import ExactCAGDError, WeightError
 from ..exact import bernstein as bz
 from ..exact.scalars import to_float, to_rational
@@ -133,8 +136,16 @@ def _homogeneous(ctrl: np.ndarray) -> np.ndarray:
     return np.concatenate([ctrl, np.full((ctrl.shape[0], 1), mpq(1), dtype=object)], axis=1)
 
 
-def certify(hom: np.ndarray, ctrl: np.ndarray, target=None) -> tuple[mpq, str]:
+def _control_form(ctrl: np.ndarray) -> ScaledBernstein:
+    """The polynomial curve ``C`` (exact control points) as integer scaled forms."""
+    return ScaledBernstein.from_homogeneous(_homogeneous(ctrl))
+
+
+def certify(hom, ctrl: np.ndarray, target=None) -> tuple[mpq, str]:
     """``(r, decided_by)``: :func:`certified_bound` and which arithmetic proved it.
+
+    ``hom``: the exact curve's homogeneous coefficients, an object array or its integer
+    form (:class:`~exactcagd.composition.fast.ScaledBernstein`).
 
     With a ``target``: the bisection of the squared error
     (:func:`~exactcagd.composition.distance_bound.homogeneous_distance_bound`), on
@@ -145,10 +156,10 @@ def certify(hom: np.ndarray, ctrl: np.ndarray, target=None) -> tuple[mpq, str]:
     """
     stats: dict = {}
     if target is None:
-        hull = _hull_bound(hom, ctrl)
+        hull = _hull_bound(hom.homogeneous() if isinstance(hom, ScaledBernstein) else hom, ctrl)
         if hull is not None:
             return hull, ball.EXACT
-    bound = homogeneous_distance_bound(hom, _homogeneous(ctrl), target=target, stats=stats)
+    bound = homogeneous_distance_bound(hom, _control_form(ctrl), target=target, stats=stats)
     return bound, (ball.EXACT if stats.get(ball.EXACT) else ball.BALL)
 
 
@@ -216,7 +227,7 @@ def _sampled_error(d: int, fctrl: np.ndarray, target_fit: np.ndarray, target_che
                for b, t in ((fit_bytes, target_fit), (check_bytes, target_check)))
 
 
-def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
+def _fit_piece(image: ScaledBernstein, p0, p1, tol: mpq, max_degree: int):
     """``(ctrl, bound, decided_by)`` of the lowest degree that certifies ``<= tol``, or ``None``.
 
     The sampled errors of ``_DEGREE_BLOCK`` consecutive degrees come from one product
@@ -226,11 +237,11 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     the selected degree is the one the degree-by-degree loop selects.
     """
     s_fit, _, fit_bytes, check_bytes = _samples()
-    n = hom.shape[0] - 1
-    fl = np.array([[float(x) for x in row] for row in hom.tolist()])
+    n = image.degree
+    fl = image.floats()
     target_fit, target_check = (_homogeneous_points(_basis(n, b)[0] @ fl) for b in (fit_bytes, check_bytes))
     f0, f1 = np.array([float(x) for x in p0]), np.array([float(x) for x in p1])
-    polynomial = all(x == hom[0, -1] for x in hom[:, -1])
+    polynomial = image.constant_weight() is not None
     top = min(max_degree, n) if polynomial else max_degree
     tol_f = to_float(tol)
     rows = 2 * s_fit.size - 1
@@ -246,7 +257,7 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
             if approx > skip_above:
                 continue
             try:
-                found = _fit_degree(d, hom, p0, p1, tol, (target_fit, target_check, f0, f1), approx < pass_below)
+                found = _fit_degree(d, image, p0, p1, tol, (target_fit, target_check, f0, f1), approx < pass_below)
             except WeightError:
                 return None
             if found is not None:
@@ -254,7 +265,7 @@ def _fit_piece(hom, p0, p1, tol: mpq, max_degree: int):
     return None
 
 
-def _fit_degree(d: int, hom, p0, p1, tol: mpq, floats: tuple, clearly_below: bool = False):
+def _fit_degree(d: int, image: ScaledBernstein, p0, p1, tol: mpq, floats: tuple, clearly_below: bool = False):
     """``(ctrl, bound, decided_by)`` when degree ``d`` passes the sampled test and certifies,
     else ``None`` (:class:`~exactcagd.errors.WeightError` when ``W`` is not bounded away from
     zero).  ``clearly_below``: the stacked estimate is below ``tol`` by more than rounding,
@@ -266,7 +277,7 @@ def _fit_degree(d: int, hom, p0, p1, tol: mpq, floats: tuple, clearly_below: boo
     ctrl = np.empty(fctrl.shape, dtype=object)
     ctrl[1:-1] = [[mpq(*x.as_integer_ratio()) for x in row] for row in fctrl[1:-1].tolist()]  # exact binary values
     ctrl[0], ctrl[-1] = list(p0), list(p1)
-    bound, decided_by = certify(hom, ctrl, target=tol)
+    bound, decided_by = certify(image, ctrl, target=tol)
     return (ctrl, bound, decided_by) if bound <= tol else None
 
 
@@ -276,7 +287,7 @@ def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segm
 
     Parameters
     ----------
-    hom : object array ``(n + 1, k + 1)``
+    hom : object array ``(n + 1, k + 1)`` or :class:`~exactcagd.composition.fast.ScaledBernstein`
         Homogeneous coefficients ``(W F, W)`` (weights positive on [0, 1]).
     tol : positive rational
     p0, p1 : sequences of rationals, optional
@@ -293,10 +304,10 @@ def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segm
         between neighbours) and the certified bound of ``max |F - C|`` on it.
     """
     tol = to_rational(tol, where="tol")
-    hom = np.asarray(hom, dtype=object)
-    ends = [tuple(hom[0, :-1] / hom[0, -1]), tuple(hom[-1, :-1] / hom[-1, -1])]
-    p0 = ends[0] if p0 is None else tuple(p0)
-    p1 = ends[1] if p1 is None else tuple(p1)
+    if not isinstance(hom, ScaledBernstein):
+        hom = ScaledBernstein.from_homogeneous(np.asarray(hom, dtype=object))
+    p0 = _affine(hom.row(0)) if p0 is None else tuple(p0)
+    p1 = _affine(hom.row(-1)) if p1 is None else tuple(p1)
     out: list = []
     stack = [(mpq(0), mpq(1), hom, p0, p1)]
     while stack:
@@ -310,12 +321,17 @@ def fit_curve(hom, tol, p0=None, p1=None, max_degree: int = MAX_DEGREE, max_segm
             continue
         if b - a < MIN_WIDTH:
             raise ExactCAGDError(f"fit: tolerance {to_float(tol):.3g} not reached on a piece narrower than 2^-40")
-        left, right = bz.subdivide(h, mpq(1, 2))
-        mid = tuple(left[-1, :-1] / left[-1, -1])
+        left, right = h.halves()
+        mid = _affine(left.row(-1))
         m = (a + b) / 2
         stack.append((m, b, right, mid, q1))
         stack.append((a, m, left, q0, mid))
     return out
+
+
+def _affine(row) -> tuple:
+    """The point of a homogeneous row ``(w P, w)``."""
+    return tuple(x / row[-1] for x in row[:-1])
 
 
 # ----------------------------------------------------------------------------- whole curve
@@ -332,7 +348,7 @@ def _joint_image(grid, key, joint, domain_row, image_row) -> tuple:
     composition is exact, so its end is ``S`` there), else :func:`_surface_point`."""
     w = domain_row[2]
     if joint.exact and (domain_row[0] / w, domain_row[1] / w) == tuple(joint.point):
-        return tuple(image_row[:-1] / image_row[-1])
+        return _affine(image_row)
     return _surface_point(grid, key, joint.point)
 
 
@@ -364,12 +380,12 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
             local = glob.copy()
             local[:, 0] = (glob[:, 0] - ua * glob[:, 2]) / (ub - ua)
             local[:, 1] = (glob[:, 1] - va * glob[:, 2]) / (vb - va)
-        hom = compose_homogeneous_fast(grid.patch_hom(key), local)
+        image = compose_scaled(grid.patch_hom(key), local)
         for j, row in ((ja, 0), (jb, -1)):
             if id(j) not in cache:  # one exact point per joint, shared by both neighbours
-                cache[id(j)] = _joint_image(grid, key, j, glob[row], hom[row])
+                cache[id(j)] = _joint_image(grid, key, j, glob[row], image.row(row))
         p0, p1 = cache[id(ja)], cache[id(jb)]
-        for (a, b), ctrl, bound in fit_curve(hom, tol, p0, p1, max_degree, max_segments, stats):
+        for (a, b), ctrl, bound in fit_curve(image, tol, p0, p1, max_degree, max_segments, stats):
             segments.append(ctrl)
             bounds.append(bound)
             patches.append(key)
