@@ -205,7 +205,7 @@ def _plot(points) -> None:
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    markers = {"auto": "x", "decasteljau": "o", "horner": "s", "power": "^", "exact mpq": "*", "mpmath 30": "D", "mpmath 60": "P"}
+    markers = {"auto": "X", "decasteljau": "o", "horner": "s", "power": "^", "exact mpq": "*", "mpmath 30": "D", "mpmath 60": "P"}
     colors = {3: "tab:blue", 10: "tab:orange", 20: "tab:green", 40: "tab:red"}
     floor = 1e-80
     for method, n, sec, err, radius in points:
