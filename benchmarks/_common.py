@@ -175,8 +175,9 @@ def parse_quick(description: str) -> bool:
 
 
 def loglog_plot(filename: str, series: dict, xlabel: str, ylabel: str, title: str, *, lines: bool = True,
-                floor: float = 1e-18) -> Path:
-    """Log-log plot of ``{label: [(x, y), ...]}`` into :func:`results_dir` (values <= 0 drawn at ``floor``)."""
+                floor: float = 1e-18, floor_meaning: str = "error 0") -> Path:
+    """Log-log plot of ``{label: [(x, y), ...]}`` into :func:`results_dir` (values <= 0 drawn at
+    ``floor``, with a dotted line labelled ``floor_meaning``)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -190,7 +191,7 @@ def loglog_plot(filename: str, series: dict, xlabel: str, ylabel: str, title: st
         ys = [max(y, floor) for _, y in points]
         ax.plot(xs, ys, marker="o", linestyle="-" if lines else "none", label=label, markersize=4)
     if any(y <= floor for points in series.values() for _, y in points):  # say what the floor means
-        ax.axhline(floor, color="0.5", ls=":", lw=1, label=f"error 0 (drawn at {floor:g})")
+        ax.axhline(floor, color="0.5", ls=":", lw=1, label=f"{floor_meaning} (drawn at {floor:g})")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(xlabel)

@@ -262,8 +262,9 @@ def main(quick: bool | None = None) -> None:
             for k, (w1, w2) in enumerate(hist)]
     ratio_rows = [[name] + [f"{r.get(m, float('nan')):.2f}" for m in ("clipping", "exact", "interval", "subdivision")] for name, r in ratios]
     body = f"""{"Quick mode. " if quick else ""}Times are medians (min-max) of repeated runs; errors are the largest
-distance of a returned estimate from the exact root / intersection parameter
-(`inf` = a root or intersection missing from the float answer, or an extra one).
+distance of a returned binary64 estimate from the exact root / intersection parameter
+rounded to binary64 (so 0 means: the correctly rounded value; `inf` = a root or
+intersection missing from the float answer, or an extra one).
 
 ## Root finding in Bernstein form (notes ch. 9)
 
@@ -338,10 +339,11 @@ Total {time.perf_counter() - start:.1f} s.
 
 def plot(rplot, iplot):
     """Two log-log work-precision plots (exact answers drawn at the floor 1e-20)."""
-    loglog_plot("bench_roots_intersection.png", rplot, "seconds", "max error of the roots",
-                "Bernstein root finding: work vs precision", lines=False, floor=1e-20)
-    loglog_plot("bench_roots_intersection_curves.png", iplot, "seconds", "max error of the parameters",
-                "curve intersection: work vs precision", lines=False, floor=1e-20)
+    meaning = "0: the correctly rounded binary64 value"
+    loglog_plot("bench_roots_intersection.png", rplot, "seconds", "max |estimate - float(exact root)|",
+                "Bernstein root finding: work vs precision", lines=False, floor=1e-20, floor_meaning=meaning)
+    loglog_plot("bench_roots_intersection_curves.png", iplot, "seconds", "max |estimate - float(exact parameter)|",
+                "curve intersection: work vs precision", lines=False, floor=1e-20, floor_meaning=meaning)
 
 
 if __name__ == "__main__":
