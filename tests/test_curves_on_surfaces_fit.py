@@ -259,3 +259,21 @@ def test_certify_catches_a_planted_violation_just_above_the_bound(rational):
 def test_result_reports_which_arithmetic_certified():
     r = approximate(_bicubic(False), DOMAIN, "1e-3", method="fit")
     assert sum(r.certified_by.values()) == len(r) and set(r.certified_by) <= {"ball", "exact"}
+
+
+def test_corners_of_a_closed_polygon_without_end_directions():
+    """The fit route asks for joints without the open curve's end directions; a closed curve
+    still gets its closure checked.  Reference: a closed triangle (degree-1 B-spline), whose
+    three vertices are its corners by construction (the closure counted at both ends), and
+    an open smooth cubic, which has none."""
+    from exactcagd import BSplineCurve
+    from exactcagd.curves_on_surfaces.domain import DomainCurve
+
+    a, b, c = (mpq(1, 5), mpq(1, 5)), (mpq(4, 5), mpq(1, 5)), (mpq(1, 2), mpq(4, 5))
+    triangle = BSplineCurve([list(a), list(b), list(c), list(a)], [0, 0, "1/3", "2/3", 1, 1])
+    r = approximate(_bicubic(False), triangle, "1e-3", method="fit")
+    assert r.closed and r.corners == [a, b, c, a]
+    assert approximate(_bicubic(False), DOMAIN, "1e-3", method="fit").corners == []
+    ends = DomainCurve(DOMAIN).joints((0, 1), (0, 1), None, "split", monotone=False, end_directions=False)
+    assert [j.point for j in ends] == [(mpq(1, 10), mpq(1, 5)), (mpq(9, 10), mpq(4, 5))]  # D(0), D(1)
+    assert ends[0].dir_out is None and ends[-1].dir_in is None

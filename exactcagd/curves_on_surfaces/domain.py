@@ -41,9 +41,10 @@ import numpy as np
 from gmpy2 import mpq
 
 from ..errors import DomainError, InputError
+from ..composition.fast import scaled
 from ..exact import bernstein as bz
 from ..exact.algebraic import RealAlgebraic, real_roots
-from ..exact.scalars import from_fmpq, to_fmpq
+from ..exact.scalars import from_fmpq
 from ..geometry.bezier_curve import BezierCurve
 from ..geometry.bspline import BSplineCurve
 
@@ -51,10 +52,6 @@ __all__ = ["DomainCurve", "Event", "Joint", "GAP_BITS"]
 
 #: Width exponent of the isolating interval that carries an irrational cut.
 GAP_BITS = 64
-
-
-def _fmpq_poly(coeffs) -> flint.fmpq_poly:
-    return flint.fmpq_poly([to_fmpq(c) for c in coeffs])
 
 
 _to_mpq = from_fmpq
@@ -129,16 +126,27 @@ class DomainCurve:
         self.spans = [span for span, _ in pieces]
         self.curves = [c for _, c in pieces]
         self.homs = [c.homogeneous() for c in self.curves]
-        self._polys = [self._make_polys(h) for h in self.homs]
+        self._poly_cache: list | None = None  # power forms, made on first use (:attr:`_polys`)
         # end points = end rows of the homogeneous form (endpoint interpolation; no evaluate() call)
         first, last = (tuple(h[:-1] / h[-1]) for h in (self.homs[0][0], self.homs[-1][-1]))
         self.closed = first == last
 
     # ------------------------------------------------------------------ polynomials
+    @property
+    def _polys(self) -> list:
+        """Per piece the power forms ``nu, nv, w`` and ``gu, gv`` (:meth:`_make_polys`), built
+        on first use: the fit route's joints of an open curve without knot-line crossings
+        need none of them."""
+        if self._poly_cache is None:
+            self._poly_cache = [self._make_polys(h) for h in self.homs]
+        return self._poly_cache
+
     @staticmethod
     def _make_polys(hom) -> dict:
-        power = bz.to_power(hom)
-        nu, nv, w = (_fmpq_poly(power[:, k]) for k in range(3))
+        # Bernstein -> power form of each column straight from its scaled form (notes 3.3),
+        # flint fmpq_poly throughout (the same polynomials as bz.to_power, no mpq round trip)
+        n = hom.shape[0] - 1
+        nu, nv, w = (bz.scaled_to_power(scaled(hom[:, k]), n) for k in range(3))
         gu = nu.derivative() * w - nu * w.derivative()
         gv = nv.derivative() * w - nv * w.derivative()
         return {"nu": nu, "nv": nv, "w": w, "gu": gu, "gv": gv}
@@ -151,8 +159,11 @@ class DomainCurve:
         return self._polys[k]["gv"] == 0
 
     def point(self, k: int, t) -> tuple:
-        p = self._polys[k]
         t = mpq(t)
+        if t == 0 or t == 1:  # end point interpolation: the homogeneous end row, no power form
+            row = self.homs[k][0 if t == 0 else -1]
+            return row[0] / row[2], row[1] / row[2]
+        p = self._polys[k]
         w = _ev(p["w"], t)
         return _ev(p["nu"], t) / w, _ev(p["nv"], t) / w
 
@@ -307,13 +318,20 @@ class DomainCurve:
             raise DomainError("degenerate direction at an irrational cut")
         return Joint((k, lo), (k, hi), (u, v), (du, dv), (du, dv), False, False, reasons + ("irrational",))
 
-    def joints(self, u_lines, v_lines, domain=None, on_corner: str = "error", monotone: bool = True) -> list[Joint]:
-        """All joints in order along the curve, start and end included (``monotone``: see :meth:`events`)."""
+    def joints(self, u_lines, v_lines, domain=None, on_corner: str = "error", monotone: bool = True,
+               end_directions: bool = True) -> list[Joint]:
+        """All joints in order along the curve, start and end included (``monotone``: see :meth:`events`).
+
+        ``end_directions=False``: the start and end joints of an *open* curve carry no
+        directions (``None``), for a caller that uses only the cuts, points and corners (the
+        fit route); every other joint, and a closed curve's ends (a possible corner), keep them.
+        """
         joints: list[Joint] = []
         n = len(self.curves)
+        directed = end_directions or self.closed
         for k in range(n):
             if k == 0:
-                left, right = self.taylor_directions(0, 0)
+                right = self.taylor_directions(0, 0)[1] if directed else None
                 joints.append(Joint((0, mpq(0)), (0, mpq(0)), self.point(0, 0), None, right, True, False, ("start",)))
             for ev in self.events(k, u_lines, v_lines, domain, monotone):
                 joints.append(self.joint_for_event(k, ev))
@@ -325,7 +343,7 @@ class DomainCurve:
                     joints.append(Joint((k, mpq(1)), (k + 1, mpq(0)), point, left, left, True, False, ("curve-knot",)))
                 else:
                     joints.append(Joint((k, mpq(1)), (k + 1, mpq(0)), point, left, right, True, True, ("curve-knot", "corner")))
-        left, _ = self.taylor_directions(n - 1, 1)
+        left = self.taylor_directions(n - 1, 1)[0] if directed else None
         joints.append(Joint((n - 1, mpq(1)), (n - 1, mpq(1)), self.point(n - 1, 1), left, None, True, False, ("end",)))
         if self.closed:
             start, end = joints[0], joints[-1]

@@ -443,7 +443,7 @@ def approximate(
             raise InputError(f"max_degree must be a positive integer, got {max_degree!r}")
         from .fit import approximate_fit
 
-        joints = dcurve.joints(grid.u_breaks, grid.v_breaks, grid.domain, "split", monotone=False)
+        joints = dcurve.joints(grid.u_breaks, grid.v_breaks, grid.domain, "split", monotone=False, end_directions=False)
         return approximate_fit(grid, dcurve, joints, tol, max_degree, max_segments, start)
     joints = dcurve.joints(grid.u_breaks, grid.v_breaks, grid.domain, on_corner)
     for a, b in zip(joints[:-1], joints[1:]):
