@@ -24,6 +24,8 @@ import flint
 import numpy as np
 import sympy
 from gmpy2 import mpq
+from sympy.polys.domains import QQ, ZZ
+from sympy.polys.polyclasses import DMP
 
 from .. import limits
 from ..errors import DegreeError, DimensionError, InputError, WeightError
@@ -133,34 +135,48 @@ def curve_power(curve) -> tuple[flint.fmpz_poly, flint.fmpz_poly, flint.fmpz_pol
     ``x = X/W, y = Y/W``; integer coefficients, jointly primitive, positive common
     scale (so the sign of ``W`` on [0, 1] is that of the weights).  No common factor
     is removed here (see :func:`common_factor`).
-    """
-    from ..geometry.bezier_curve import BezierCurve
 
-    if not isinstance(curve, BezierCurve):
+    The homogeneous Bernstein coefficients ``(w_i x_i, w_i y_i, w_i)`` over one common
+    denominator go to the power basis in one flint matrix product (notes 3.3:
+    ``t^k`` coefficient ``= sum_i C(n,i) C(n-i,k-i) (-1)^(k-i) c_i``).
+
+    >>> from exactcagd import BezierCurve
+    >>> curve_power(BezierCurve([[0, 0], [1, 2], [2, 0]], weights=[1, 2, 1]))   # W = 1 + 2t - 2t^2
+    ((-2)*x^2 + 4*x, (-8)*x^2 + 8*x, (-2)*x^2 + 2*x + 1)
+    """
+    if not isinstance(curve, _bezier_curve_class()):
         raise InputError(f"expected a BezierCurve, got {type(curve).__name__}")
     if curve.dimension != 2:
         raise DimensionError(f"implicit algebra needs a planar curve, got dimension {curve.dimension}")
-    limits.check("max_implicit_degree", curve.degree, f"implicit algebra of a degree-{curve.degree} curve (implicit degree up to {curve.degree})")
-    hom = curve.homogeneous()
-    n = hom.shape[0] - 1
-    # Bernstein -> power basis over Z in one flint matrix product (notes 3.3:
-    # t^k coefficient = sum_i C(n,i) C(n-i,k-i) (-1)^(k-i) c_i) on the integer
-    # coefficients over one common denominator, then the joint content (40 -> 11 us, cubic)
-    rows = hom.tolist()
+    n = curve.degree
+    if (limit := limits.get("max_implicit_degree")) is not None and n > limit:
+        limits.check("max_implicit_degree", n, f"implicit algebra of a degree-{n} curve (implicit degree up to {n})")
+    points, weights = curve.points_array().tolist(), curve.weights
+    # the three homogeneous columns, one after the other (rows of the transposed product)
+    if weights is None:
+        flat = [p[0] for p in points] + [p[1] for p in points] + [1] * (n + 1)
+    else:
+        flat = [p[0] * w for p, w in zip(points, weights)] + [p[1] * w for p, w in zip(points, weights)] + list(weights)
     den = 1
-    for row in rows:
-        for v in row:
-            d = int(v.denominator)
-            if d != 1:
-                den = den * d // _gcd(den, d)
-    power = _bernstein_to_power_z(n) * flint.fmpz_mat([[int(v * den) for v in row] for row in rows])
-    comps = [flint.fmpz_poly([power[k, j] for k in range(n + 1)]) for j in range(3)]
-    g = 0
-    for p in comps:
-        g = _gcd(g, int(p.content()))
+    for v in flat:
+        d = v.denominator
+        if d != 1:
+            den = den * d // _gcd(den, d)
+    ints = [int(v) for v in flat] if den == 1 else [int(v * den) for v in flat]
+    m = n + 1
+    comps = [flint.fmpz_poly(row) for row in (flint.fmpz_mat(3, m, ints) * _power_from_bernstein_z(n)).tolist()]
+    g = _gcd(_gcd(int(comps[0].content()), int(comps[1].content())), int(comps[2].content()))
     if g > 1:
         comps = [p // g for p in comps]
     return tuple(comps)
+
+
+@lru_cache(maxsize=1)
+def _bezier_curve_class():
+    """:class:`BezierCurve`, imported on first use (the geometry layer imports nothing from here)."""
+    from ..geometry.bezier_curve import BezierCurve
+
+    return BezierCurve
 
 
 @lru_cache(maxsize=64)
@@ -168,6 +184,12 @@ def _bernstein_to_power_z(n: int) -> flint.fmpz_mat:
     """The integer matrix taking Bernstein coefficients of degree ``n`` to power coefficients."""
     return flint.fmpz_mat([[bz.binomial(n, i) * bz.binomial(n - i, k - i) * (-1) ** (k - i) if k >= i else 0 for i in range(n + 1)]
                            for k in range(n + 1)])
+
+
+@lru_cache(maxsize=64)
+def _power_from_bernstein_z(n: int) -> flint.fmpz_mat:
+    """The transpose of :func:`_bernstein_to_power_z` (coefficient rows times it: power rows)."""
+    return _bernstein_to_power_z(n).transpose()
 
 
 def common_factor(X, Y, W) -> tuple[flint.fmpz_poly, tuple]:
@@ -225,12 +247,11 @@ def mpoly_to_sympy(p, gens) -> sympy.Poly:
     sympification of each coefficient: about 3x faster, and the result of every
     implicitization passes through here).
     """
-    from sympy.polys.domains import QQ, ZZ
-    from sympy.polys.polyclasses import DMP
-
     if isinstance(p, flint.fmpz_mpoly) and len(gens) == 2 and not p.is_zero():
         # bivariate integer (every implicit equation): sympy's dense rows filled directly
         # (half the time of DMP.from_dict: no int exponents, no recursive dict walk)
+        if p.context() is XY and (full := grevlex_full_poly(p, gens)) is not None:
+            return full
         coeffs = p.coeffs() if ZZ.dtype is flint.fmpz else [ZZ(int(c)) for c in p.coeffs()]
         return sympy.Poly.new(DMP(_dense_bivariate([(int(i), int(j)) for i, j in p.monoms()], coeffs, ZZ.zero), ZZ, 1), *gens)
     monoms = [tuple(int(e) for e in m) for m in p.monoms()]
@@ -243,6 +264,43 @@ def mpoly_to_sympy(p, gens) -> sympy.Poly:
     else:
         rep, domain = {m: QQ(int(c.p), int(c.q)) for m, c in zip(monoms, coeffs)}, QQ
     return sympy.Poly.new(DMP.from_dict(rep, len(gens) - 1, domain), *gens)
+
+
+def grevlex_full_poly(p, gens) -> sympy.Poly | None:
+    """The sympy ``Poly`` in the two ``gens`` of an integer ``fmpz_mpoly`` ``p`` whose first
+    two variables are ``x > y`` in grevlex order and whose other variables do not occur
+    (``XY``, or a resultant in ``(x, y, t)`` grevlex with ``t`` eliminated), when ``p`` has
+    every monomial of total degree ``<= d`` (a generic implicit equation); else ``None``.
+
+    The term order then fixes where each coefficient goes: no monomial is read (reading
+    them costs more than the rest of the conversion).
+
+    >>> grevlex_full_poly(XY.from_dict({(1, 0): 2, (0, 1): -3, (0, 0): 5}), (X_SYM, Y_SYM)).as_expr()
+    2*x - 3*y + 5
+    >>> grevlex_full_poly(XY.from_dict({(1, 0): 2, (0, 0): 5}), (X_SYM, Y_SYM)) is None   # no y term
+    True
+    """
+    coeffs = p.coeffs()
+    d = int(p.total_degree())
+    if len(coeffs) != _triangle(d):
+        return None
+    if ZZ.dtype is not flint.fmpz:
+        coeffs = [ZZ(int(c)) for c in coeffs]
+    return sympy.Poly.new(DMP([[coeffs[k] for k in row] for row in _dense_rows_grevlex(d)], ZZ, 1), *gens)
+
+
+def _triangle(d: int) -> int:
+    """The number of monomials ``x^i y^j`` with ``i + j <= d``."""
+    return (d + 1) * (d + 2) // 2
+
+
+@lru_cache(maxsize=64)
+def _dense_rows_grevlex(d: int) -> tuple:
+    """Positions, in the grevlex (``x > y``) term list of a bivariate polynomial with all
+    monomials of total degree ``<= d``, of sympy's dense rows (falling x-degree, each by
+    falling y-degree).  The term list runs over total degree ``k = d, ..., 0`` and within
+    it ``x^k, x^(k-1) y, ..., y^k``, so ``x^i y^j`` is term ``T(d) - T(i + j) + j``."""
+    return tuple(tuple(_triangle(d) - _triangle(i + j) + j for j in range(d - i, -1, -1)) for i in range(d, -1, -1))
 
 
 def _dense_bivariate(monoms, coeffs, zero) -> list:

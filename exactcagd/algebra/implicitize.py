@@ -39,7 +39,7 @@ import sympy
 
 from ..errors import InputError
 from ._diagnostics import BasePointError, BasePointWarning, ImproperParametrizationError, ImproperParametrizationWarning
-from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, mpoly_to_sympy, normalize_implicit, zctx
+from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, grevlex_full_poly, mpoly_to_sympy, normalize_implicit, zctx
 from .resultants import bezout_matrix_bernstein, det_bareiss, resultant_coeffs
 
 __all__ = [
@@ -59,37 +59,57 @@ __all__ = [
 ROUTES = ("resultant", "bezier", "moving_lines")
 
 
-@dataclass
+@dataclass(eq=False, repr=False)
 class ImplicitEquation:
     """Implicit equation of a rational curve, with what was found on the way.
 
     Attributes
     ----------
-    poly : sympy.Poly in ``x, y`` (integer, primitive, grevlex-positive), built from
-        ``mpoly`` on first access (the conversion costs more than flint's resultant of a cubic)
-    mpoly : the same as a python-flint ``fmpz_mpoly``
+    poly : sympy.Poly in ``x, y`` (integer, primitive, grevlex-positive), built on first
+        access (the conversion costs more than flint's resultant of a cubic)
+    mpoly : the same as a python-flint ``fmpz_mpoly`` in ``x, y`` (grevlex); built on first
+        access when the resultant route left it in ``Z[x, y, t]`` (``t`` eliminated)
     degree : total degree of ``poly``
     index : ``r``: the resultant was ``c * poly^r`` (``r = 1``: proper parametrization)
     base_factor : common factor of ``X, Y, W`` removed (``1`` if none), as ``fmpz_poly``
     curve_degree : degree of the reduced parametrization
     """
 
-    mpoly: object
+    _raw: object  # the normalized equation, in XY or in _XYT without t
     degree: int
     index: int
     base_factor: object
     curve_degree: int
-    _poly: sympy.Poly | None = field(default=None, repr=False, compare=False)
+    _poly: sympy.Poly | None = field(default=None)
+
+    @property
+    def mpoly(self):
+        if self._raw.context() is not XY:
+            self._raw = self._raw.project_to_context(XY)
+        return self._raw
 
     @property
     def poly(self) -> sympy.Poly:
         if self._poly is None:
-            self._poly = mpoly_to_sympy(self.mpoly, (X_SYM, Y_SYM))
+            # the dense rows straight from the grevlex term list (either context), else the general conversion
+            self._poly = grevlex_full_poly(self._raw, (X_SYM, Y_SYM)) or mpoly_to_sympy(self.mpoly, (X_SYM, Y_SYM))
         return self._poly
 
     @property
     def proper(self) -> bool:
         return self.index == 1
+
+    def _key(self) -> tuple:
+        return (self.mpoly, self.degree, self.index, self.base_factor, self.curve_degree)
+
+    def __eq__(self, other) -> bool:
+        return self._key() == other._key() if isinstance(other, ImplicitEquation) else NotImplemented
+
+    __hash__ = None
+
+    def __repr__(self) -> str:
+        return (f"ImplicitEquation(mpoly={self.mpoly!r}, degree={self.degree!r}, index={self.index!r}, "
+                f"base_factor={self.base_factor!r}, curve_degree={self.curve_degree!r})")
 
 
 def _in_t(g) -> sympy.Expr:
@@ -103,13 +123,32 @@ def reduced_components(curve, warn: bool = True):
     g, (X, Y, W) = common_factor(X, Y, W)
     check_not_constant(X, Y, W)
     if g.degree() > 0 and warn:
-        warnings.warn(
-            f"the parametrization has base points (common factor {_in_t(g)} of X, Y, W, notes 18.3.4); "
-            "it was divided out",
-            BasePointWarning,
-            stacklevel=3,
-        )
+        _warn_base_points(g, stacklevel=4)
     return X, Y, W, g
+
+
+def _warn_base_points(g, stacklevel: int) -> None:
+    warnings.warn(
+        f"the parametrization has base points (common factor {_in_t(g)} of X, Y, W, notes 18.3.4); "
+        "it was divided out",
+        BasePointWarning,
+        stacklevel=stacklevel,
+    )
+
+
+def _reduced_and_proper(curve, warn: bool):
+    """:func:`reduced_components` and :func:`proper_at_fiber` in one pass: a proof of
+    properness also proves the curve is not a point (``A`` or ``B`` has degree ``n >= 1``),
+    so the constant check runs only when the fibre test is undecided.  Same errors, in the
+    same order, before the resultant."""
+    X, Y, W = curve_power(curve)
+    g, (X, Y, W) = common_factor(X, Y, W)
+    proper = proper_at_fiber(X, Y, W)
+    if not proper:
+        check_not_constant(X, Y, W)
+    if g.degree() > 0 and warn:
+        _warn_base_points(g, stacklevel=4)
+    return X, Y, W, g, proper
 
 
 def _padded(p, n: int) -> list:
@@ -118,18 +157,30 @@ def _padded(p, n: int) -> list:
     return c + [0] * (n + 1 - len(c))
 
 
-_XYT = zctx(("x", "y", "_t_"), "lex")
+# grevlex with x > y > t: a polynomial free of t lists its terms in XY's order (same leading term)
+_XYT = zctx(("x", "y", "_t_"), "degrevlex")
+
+
+def _flint_resultant_xyt(X, Y, W):
+    """``Res_t(W x - X, W y - Y)`` built directly in ``Z[x, y, t]`` for python-flint's
+    resultant, left in that ring (free of ``t``): the route of ``resultant_coeffs(..., "flint")``
+    without lifting coefficient lists from ``Z[x, y]`` term by term."""
+    w = W.coeffs()
+    a = {(1, 0, k): v for k, v in enumerate(w) if v}
+    a.update({(0, 0, k): -v for k, v in enumerate(X.coeffs()) if v})
+    b = {(0, 1, k): v for k, v in enumerate(w) if v}
+    b.update({(0, 0, k): -v for k, v in enumerate(Y.coeffs()) if v})
+    return _XYT.from_dict(a).resultant(_XYT.from_dict(b), "_t_")
 
 
 def _flint_resultant_xy(X, Y, W):
-    """``Res_t(W x - X, W y - Y)`` built directly in ``Z[x, y, t]`` (lex) for python-flint's
-    resultant, then projected to ``Z[x, y]``: the route of ``resultant_coeffs(..., "flint")``
-    without lifting coefficient lists from ``Z[x, y]`` term by term."""
-    a = {(1, 0, k): v for k, v in enumerate(W.coeffs()) if v}
-    a.update({(0, 0, k): -v for k, v in enumerate(X.coeffs()) if v})
-    b = {(0, 1, k): v for k, v in enumerate(W.coeffs()) if v}
-    b.update({(0, 0, k): -v for k, v in enumerate(Y.coeffs()) if v})
-    return _XYT.from_dict(a).resultant(_XYT.from_dict(b), "_t_").project_to_context(XY)
+    """:func:`_flint_resultant_xyt` projected to ``Z[x, y]``."""
+    return _flint_resultant_xyt(X, Y, W).project_to_context(XY)
+
+
+def _flint_applies(X, Y, W) -> bool:
+    """flint needs both ``W x - X`` and ``W y - Y`` non-constant in t (else the curve is a line ``x = c``)."""
+    return max(W.degree(), X.degree()) > 0 and max(W.degree(), Y.degree()) > 0
 
 
 def _xy_coeff_lists(X, Y, W) -> tuple[list, list]:
@@ -152,8 +203,7 @@ def implicit_resultant(X, Y, W, via: str = "flint"):
     ``via``: ``"flint"`` (subresultants), ``"sylvester"`` or ``"bezout"`` (Bareiss
     on the power-form matrices of 17.3).
     """
-    # flint needs both W x - X and W y - Y non-constant in t (else the curve is a line x = c)
-    if via == "flint" and max(W.degree(), X.degree()) > 0 and max(W.degree(), Y.degree()) > 0:
+    if via == "flint" and _flint_applies(X, Y, W):
         return _flint_resultant_xy(X, Y, W)
     a, b = _xy_coeff_lists(X, Y, W)
     return resultant_coeffs(a, b, "sylvester" if via == "flint" else via)
@@ -278,6 +328,12 @@ def _finish(R, g, n: int, proper: bool = False) -> ImplicitEquation:
     (proved by :func:`proper_at_fiber`) skips the squarefree factorization (``r = 1``)."""
     if R == 0:  # pragma: no cover - base points were removed
         raise ArithmeticError("the resultant vanished identically")
+    if proper and isinstance(R, flint.fmpz_mpoly) and R.context() is _XYT:
+        # normalized where it was computed (its grevlex leading term is XY's), projected on demand
+        content = R.content()
+        F = R / content if content != 1 else R
+        F = -F if F.leading_coefficient() < 0 else F
+        return ImplicitEquation(F, int(F.total_degree()), 1, g, n)
     if not isinstance(R, flint.fmpz_mpoly) or R.context() is not XY:
         R = XY.from_dict({tuple(m): int(c) for m, c in R.to_dict().items()}) if isinstance(R, flint.fmpz_mpoly) else XY.from_dict({(0, 0): int(R)})
     if proper:
@@ -308,20 +364,16 @@ def implicit_equation(curve, method: str = "resultant", strict: bool = False) ->
     """
     if method not in ROUTES:
         raise InputError(f"unknown implicitization method {method!r}; choose one of {ROUTES}")
-    if strict:
-        X, Y, W, g = reduced_components(curve, warn=False)
-        if g.degree() > 0:
-            raise BasePointError(f"the parametrization has base points: X, Y, W share the factor {_in_t(g)} (notes 18.3.4)")
-    else:
-        X, Y, W, g = reduced_components(curve)
-    n = max(p.degree() for p in (X, Y, W))
+    X, Y, W, g, proper = _reduced_and_proper(curve, warn=not strict)
+    if strict and g.degree() > 0:
+        raise BasePointError(f"the parametrization has base points: X, Y, W share the factor {_in_t(g)} (notes 18.3.4)")
+    n = max(X.degree(), Y.degree(), W.degree())
     if method == "resultant":
-        R = implicit_resultant(X, Y, W)
+        R = _flint_resultant_xyt(X, Y, W) if proper and _flint_applies(X, Y, W) else implicit_resultant(X, Y, W)
     elif method == "bezier":
         R = implicit_bezier(X, Y, W)
     else:
         R = implicit_moving_lines(X, Y, W)
-    proper = proper_at_fiber(X, Y, W)
     if strict:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ImproperParametrizationWarning)
