@@ -264,3 +264,27 @@ def test_squared_error_is_the_squared_distance_in_both_input_forms(pair):
     for t in (Fr(0), Fr(1, 3), Fr(5, 7), Fr(1)):
         a, b = _point(pf, wf, t), _point(px, wx, t)
         assert _scaled_value(e, D, t) / _scaled_value(w2, D, t) == sum((x - y) ** 2 for x, y in zip(a, b))
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(st.integers(-(2**400), 2**400), min_size=1, max_size=40), st.integers(1, 2**90), st.booleans())
+def test_integer_column_rounds_outward_within_its_precision(numer, den, up):
+    """``_integer_column`` at ``bits`` precision: every ``c_i s`` lies on the requested side of the
+    exact Bernstein coefficient ``b_i = p_i / C(n, i)`` (Fractions), by less than ``2^(1 - bits)``
+    times the largest ``|b_i|``; exact (``bits=None``) it is ``b_i`` itself."""
+    import flint
+
+    from exactcagd.composition import distance_bound as module
+
+    n, bits = len(numer) - 1, 64
+    p = flint.fmpq_poly(numer, den)
+    exact = [Fr(int(c.p), int(c.q)) / comb(n, i) for i, c in enumerate(p.coeffs() + [flint.fmpq(0)] * (n + 1 - len(p.coeffs())))]
+    column, scale = module._integer_column(p, n, bits, up)
+    s = Fr(int(scale.p), int(scale.q))
+    got = [int(c) * s for c in column]
+    largest = max(abs(b) for b in exact)
+    for g, b in zip(got, exact):
+        assert (g >= b) if up else (g <= b)
+        assert abs(g - b) <= largest * Fr(2, 2**bits)
+    column, scale = module._integer_column(p, n, None, up)
+    assert [int(c) * Fr(int(scale.p), int(scale.q)) for c in column] == exact

@@ -171,17 +171,18 @@ def _integer_column(p: flint.fmpq_poly, n: int, bits: int | None, up: bool) -> t
     the common denominator ``den L`` (``L = lcm_i C(n, i)``) ``b_i = numer_i (L / C(n, i)) / (den L)``.
     """
     numer = p.numer().coeffs()
-    numer += [flint.fmpz(0)] * (n + 1 - len(numer))
     lcm, cofactors = _binomial_cofactors(n)
     column = [a * c for a, c in zip(numer, cofactors)]
+    column += [flint.fmpz(0)] * (n + 1 - len(column))
     scale = flint.fmpq(1, p.denom() * lcm)
     if bits is None:
         return column, scale
     shift = max(max(column), -min(column)).bit_length() - bits
     if shift <= 0:
         return column, scale
-    if up:  # ceiling of x / 2^shift is -floor(-x / 2^shift)
-        column = [-((-x) >> shift) for x in column]
+    if up:  # ceiling of x / 2^shift is floor((x + 2^shift - 1) / 2^shift)
+        below = (flint.fmpz(1) << shift) - 1
+        column = [(x + below) >> shift for x in column]
     else:
         column = [x >> shift for x in column]
     return column, scale * (flint.fmpz(1) << shift)
@@ -189,11 +190,11 @@ def _integer_column(p: flint.fmpq_poly, n: int, bits: int | None, up: bool) -> t
 
 @lru_cache(maxsize=64)
 def _binomial_cofactors(n: int) -> tuple[int, tuple]:
-    """``(L, (L / C(n, i))_i)`` with ``L = lcm_i C(n, i)``."""
+    """``(L, (L / C(n, i))_i)`` with ``L = lcm_i C(n, i)`` (the cofactors as flint integers)."""
     from math import lcm
 
     big = lcm(*_binomials(n))
-    return big, tuple(big // b for b in _binomials(n))
+    return big, tuple(flint.fmpz(big // b) for b in _binomials(n))
 
 
 def ratio_max_bound(e: flint.fmpq_poly, w2, n: int, rel, max_leaves: int, target2=None, bits: int | None = None):
@@ -222,8 +223,14 @@ def ratio_max_bound(e: flint.fmpq_poly, w2, n: int, rel, max_leaves: int, target
     else:
         w_col, w_scale = _integer_column(w2, n, bits, False)
         factor = e_scale / w_scale
-    return _bisection(e_col, w_col, n, factor, _fmpq(mpq(1) + mpq(rel)), max_leaves,
+    return _bisection(e_col, w_col, n, factor, _one_plus(rel), max_leaves,
                       None if target2 is None else _fmpq(target2))
+
+
+@lru_cache(maxsize=16)
+def _one_plus(rel) -> flint.fmpq:
+    """``1 + rel`` as an exact ``fmpq`` (``rel`` a float or rational)."""
+    return _fmpq(mpq(1) + mpq(rel))
 
 
 def _largest_ratio(e: list, w: list | None, w_low) -> flint.fmpq:
@@ -248,7 +255,8 @@ def _largest_ratio(e: list, w: list | None, w_low) -> flint.fmpq:
 def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
     """:func:`ratio_max_bound` on integer columns: the true ``e_i / w_i`` of a leaf at depth ``k``
     is ``e_col_i / w_col_i * factor`` (``w_col = None``: ``w_i = 2^(n k)``, a constant ``w2``).
-    A leaf keeps its coefficients as one ``fmpz_mat`` (columns ``e`` and ``w``) for its halving."""
+    A leaf keeps its coefficients as one ``fmpz_mat`` (columns ``e`` and ``w``) for its halving
+    (the root's is built only when it is halved: most certificates are decided on [0, 1])."""
     left, right = _halves(n)
     zero = flint.fmpq(0)
     lower = zero
@@ -256,9 +264,9 @@ def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
     counter = 0
     columns = 1 if w_col is None else 2
 
-    def push(mat, depth):
+    def push(mat, depth, entries=None):
         nonlocal counter, lower
-        entries = mat.entries()
+        entries = mat.entries() if entries is None else entries
         ce = entries[::columns]
         if w_col is None:
             cw = None
@@ -279,7 +287,7 @@ def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
         counter += 1
 
     flat = e_col if w_col is None else [x for pair in zip(e_col, w_col) for x in pair]
-    push(flint.fmpz_mat(n + 1, columns, flat), 0)
+    push(None, 0, flat)
     while True:
         _, _, depth, mat, bound = heap[0]
         if bound is not None and (len(heap) >= max_leaves or bound <= lower * one_rel or bound == 0):
@@ -289,6 +297,8 @@ def _bisection(e_col, w_col, n, factor, one_rel, max_leaves, target2):
         if depth > 60:
             return None
         heapq.heappop(heap)
+        if mat is None:  # the root
+            mat = flint.fmpz_mat(n + 1, columns, flat)
         push(left * mat, depth + 1)
         push(right * mat, depth + 1)
     return from_fmpq(heap[0][4])
