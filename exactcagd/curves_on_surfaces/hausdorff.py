@@ -26,9 +26,15 @@ pairing only affects tightness: the ``tau_i`` are float foot points of
 ``C_1(t_i)`` on ``C_2`` (rounded to dyadic rationals, kept monotonic), and pieces
 whose bound is too large are bisected adaptively.  Every distance comparison is
 exact (rationals or ``Q(sqrt(Delta))``); square roots are bounded above by exact
-integer square roots.  For rational pieces the same formula is first evaluated in ball
-arithmetic (python-flint ``arb``, outward rounded; :func:`ball_piece_bound`), and exactly
-only when the ball's upper end does not certify the piece.
+integer square roots.  For rational pieces the same formula is evaluated first for all
+pieces of a bisection level at once in outward-rounded binary64 intervals
+(:func:`float_piece_bounds`), then, for a piece the interval leaves undecided (the limit
+inside it), in ball arithmetic (python-flint ``arb``; :func:`ball_piece_bound`), and
+exactly only when the ball does not decide either.  An enclosure decides both ways: its
+upper end below the limit certifies the piece, its lower end above the limit proves the
+exact bound exceeds it (the piece is bisected), so the pieces accepted are those of the
+exact formula.  The bound returned is the largest ball (else exact) piece bound of the
+pieces that can attain it (:class:`Certified`).
 
 >>> from gmpy2 import mpq
 >>> from exactcagd import BezierCurve
