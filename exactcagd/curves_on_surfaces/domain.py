@@ -159,13 +159,18 @@ class DomainCurve:
         return self._polys[k]["gv"] == 0
 
     def point(self, k: int, t) -> tuple:
+        """``D(t)`` on piece ``k``, exact: ``sum_i C(n, i) t^i (1 - t)^(n - i) (w_i P_i, w_i)``
+        dehomogenized (Bernstein form, notes 2.1; end points are the end rows)."""
         t = mpq(t)
-        if t == 0 or t == 1:  # end point interpolation: the homogeneous end row, no power form
+        if t == 0 or t == 1:  # end point interpolation: the homogeneous end row
             row = self.homs[k][0 if t == 0 else -1]
             return row[0] / row[2], row[1] / row[2]
-        p = self._polys[k]
-        w = _ev(p["w"], t)
-        return _ev(p["nu"], t) / w, _ev(p["nv"], t) / w
+        rows = self.homs[k].tolist()
+        n = len(rows) - 1
+        s = 1 - t
+        basis = [bz.binomial(n, i) * t**i * s ** (n - i) for i in range(n + 1)]
+        x, y, w = (sum(b * row[c] for b, row in zip(basis, rows)) for c in range(3))
+        return x / w, y / w
 
     def derivative_direction(self, k: int, t) -> tuple:
         """``G(t) = N'(t) W(t) - N(t) W'(t)``: a positive multiple of ``D'(t)``."""
