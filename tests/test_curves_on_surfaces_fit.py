@@ -277,3 +277,22 @@ def test_corners_of_a_closed_polygon_without_end_directions():
     ends = DomainCurve(DOMAIN).joints((0, 1), (0, 1), None, "split", monotone=False, end_directions=False)
     assert [j.point for j in ends] == [(mpq(1, 10), mpq(1, 5)), (mpq(9, 10), mpq(4, 5))]  # D(0), D(1)
     assert ends[0].dir_out is None and ends[-1].dir_in is None
+
+
+def test_domain_point_is_the_fraction_de_casteljau_point():
+    """DomainCurve.point (the fit route's joints and domain checks) against the de Casteljau
+    triangle of the homogeneous control points in Fractions, rational and polynomial pieces."""
+    from exactcagd.curves_on_surfaces.domain import DomainCurve
+
+    rng = random.Random(11)
+    for trial in range(40):
+        n = rng.randint(1, 5)
+        pts = [[Fr(rng.randint(0, 1000), 1000), Fr(rng.randint(0, 1000), 997)] for _ in range(n + 1)]
+        ws = [Fr(rng.randint(1, 9), rng.randint(1, 5)) for _ in range(n + 1)] if trial % 2 else [Fr(1)] * (n + 1)
+        curve = DomainCurve(BezierCurve([[str(x) for x in p] for p in pts], [str(w) for w in ws]))
+        for t in (Fr(0), Fr(1, 2), Fr(rng.randint(1, 99), 100), Fr(rng.randint(1, 2**70 - 1), 2**70), Fr(1)):
+            level = [[w * p[0], w * p[1], w] for p, w in zip(pts, ws)]
+            while len(level) > 1:
+                level = [[(1 - t) * a + t * b for a, b in zip(r0, r1)] for r0, r1 in zip(level[:-1], level[1:])]
+            x, y, w = level[0]
+            assert curve.point(0, mpq(t.numerator, t.denominator)) == (mpq(x / w), mpq(y / w))
