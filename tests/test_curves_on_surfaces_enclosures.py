@@ -293,3 +293,24 @@ def test_flint_bernstein_product_is_the_product(m, n, field, rng):
     for k in range(m + n + 1):
         t = mpq(k + 1, m + n + 3)
         assert value(list(c), t) == value(a, t) * value(b, t)
+
+
+@pytest.mark.parametrize("level", [0, 2, 4])
+def test_derivative_bound_is_not_below_a_corner_value(level):
+    """S(u, v) = (u, v, u v) (reference: sympy derivatives, exact): at the corner (1, 1),
+    |S_u|^2 + |S_v|^2 = 2 + 2 = 4, the largest over [0, 1]^2.  The cell bound of the corner
+    cell must reach it; a claim 2^-50 below it would be false."""
+    import sympy
+
+    from exactcagd import BezierSurface
+    from exactcagd.curves_on_surfaces.surface_grid import SurfaceGrid
+
+    u, v = sympy.symbols("u v")
+    X = sympy.Matrix([u, v, u * v])
+    true = sum(c**2 for c in X.diff(u).subs({u: 1, v: 1})) + sum(c**2 for c in X.diff(v).subs({u: 1, v: 1}))
+    assert true == 4
+    grid = SurfaceGrid(BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]))
+    side = mpq(1, 2**level)
+    bound = grid.lipschitz_sq((0, 0), (1 - side, 1), (1 - side, 1))
+    assert bound >= 4 > 4 * (1 - mpq(1, 2**50))
+    assert bound <= 4 + 4 * side  # tight on small cells (|S_u|^2 <= 1 + v^2 on the cell)
