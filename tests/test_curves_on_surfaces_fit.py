@@ -296,3 +296,14 @@ def test_domain_point_is_the_fraction_de_casteljau_point():
                 level = [[(1 - t) * a + t * b for a, b in zip(r0, r1)] for r0, r1 in zip(level[:-1], level[1:])]
             x, y, w = level[0]
             assert curve.point(0, mpq(t.numerator, t.denominator)) == (mpq(x / w), mpq(y / w))
+
+
+@pytest.mark.parametrize("method", ["fit", "parabola"])
+def test_constant_domain_curve_is_refused(method):
+    """A domain curve whose control points coincide (rational weights do not matter) is a
+    point, not a curve: refused on every route."""
+    from exactcagd.errors import DomainError
+
+    point = BezierCurve([["1/3", "1/4"]] * 4, weights=[1, 2, 3, 1])
+    with pytest.raises(DomainError, match="constant"):
+        approximate(_bicubic(False), point, "1e-3", method=method)

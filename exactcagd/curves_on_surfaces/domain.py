@@ -210,7 +210,6 @@ class DomainCurve:
         ``monotone=False`` leaves out the monotonicity and stationary-point cuts (only the
         knot-line crossings are needed, e.g. by the fit route, which is C0 anyway).
         """
-        p = self._polys[k]
         hom = self.homs[k]
         pts = [(hom[i, 0] / hom[i, 2], hom[i, 1] / hom[i, 2]) for i in range(hom.shape[0])]
         found: list[tuple[RealAlgebraic, dict]] = []
@@ -224,24 +223,27 @@ class DomainCurve:
         for axis, lines, key in ((0, u_lines, "u_line"), (1, v_lines, "v_line")):
             lo = min(q[axis] for q in pts)
             hi = max(q[axis] for q in pts)
-            num = p["nu"] if axis == 0 else p["nv"]
             for value in lines:
                 # Bernstein coefficients w_i (q_i - value), w_i > 0, all >= 0 (or all <= 0) and not
                 # all zero: num - value w has no root in (0, 1) (each B_i > 0 there)
                 if not (lo < value < hi):
                     continue
+                p = self._polys[k]  # power forms only where a knot line may be crossed
+                num = p["nu"] if axis == 0 else p["nv"]
                 poly = num - flint.fmpq(int(value.numerator), int(value.denominator)) * p["w"]
                 if poly == 0:
                     continue  # the piece runs along this knot line
                 roots = [(r, m) for r, m in real_roots(_coeffs(poly), 0, 1) if m % 2 == 1]
                 add(roots, **{key: value})
-        if p["gu"] == 0 and p["gv"] == 0:
+        # G = N' W - N W' vanishes identically iff every control point is the same (the weights
+        # are non-zero and the Bernstein polynomials independent): no power form needed
+        if all(q == pts[0] for q in pts):
             raise DomainError(f"the domain curve is constant on its piece {k}")
+        p = self._polys[k] if monotone else None
         for key, g in (("mono_u", p["gu"]), ("mono_v", p["gv"])) if monotone else ():
             if g != 0:
                 add([(r, m) for r, m in real_roots(_coeffs(g), 0, 1) if m % 2 == 1], **{key: True})
-        common = p["gu"].gcd(p["gv"]) if (p["gu"] != 0 and p["gv"] != 0) else (p["gu"] if p["gv"] == 0 else p["gv"])
-        if monotone and common.degree() > 0 and p["gu"] != 0 and p["gv"] != 0:
+        if monotone and p["gu"] != 0 and p["gv"] != 0 and (common := p["gu"].gcd(p["gv"])).degree() > 0:
             for r, _ in real_roots(_coeffs(common), 0, 1):
                 if r == 0 or r == 1:
                     continue
