@@ -132,3 +132,37 @@ def test_full_grevlex_poly_refuses_a_missing_monomial():
     assert grevlex_full_poly(XY.from_dict(data), (x, y)) is None
     ref = sp.Poly(sum(c * x**i * y**j for (i, j), c in data.items()), x, y)
     assert mpoly_to_sympy(XY.from_dict(data), (x, y)).rep.to_list() == ref.rep.to_list()
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(1, 7).flatmap(lambda n: st.tuples(*[st.lists(st.integers(-50, 50), min_size=n + 1, max_size=n + 1) for _ in range(3)])))
+def test_bezout_pencil_is_the_notes_bezout_matrix(data):
+    """``x A_x + y A_y + C`` equals the notes' Bezout matrix of ``W x - X``, ``W y - Y``
+    (``resultants._bezout_rows``, brackets summed entry by entry) at integer points, up to
+    its display flip (rows and columns reversed)."""
+    from exactcagd.algebra.implicitize import _bezout_pencil
+    from exactcagd.algebra.resultants import _bezout_rows
+
+    cx, cy, cw = data
+    n = len(cx) - 1
+    Ax, Ay, C = _bezout_pencil(flint.fmpz_poly(cx), flint.fmpz_poly(cy), flint.fmpz_poly(cw), n)
+    for px, py in [(0, 0), (2, -3), (7, 5)]:
+        f = [w * px - a for w, a in zip(cw, cx)]
+        g = [w * py - b for w, b in zip(cw, cy)]
+        ref = _bezout_rows(f, g, n)
+        got = (Ax * px + Ay * py + C).tolist()
+        assert [[int(v) for v in row] for row in got] == [[ref[n - 1 - i][n - 1 - j] for j in range(n)] for i in range(n)]
+
+
+def test_higher_degrees_agree_with_the_moving_line_route():
+    import random
+
+    rng = random.Random(7)
+    for n in (6, 7, 8):
+        pts = [[rng.randint(-40, 40), rng.randint(-40, 40)] for _ in range(n + 1)]
+        w = [rng.randint(1, 9) for _ in range(n + 1)]
+        curve = BezierCurve(pts, w)
+        fast = implicit_equation(curve)
+        assert fast.index == 1 and fast.degree == n
+        assert fast.poly == implicit_equation(curve, "moving_lines").poly
+        assert fast.mpoly == implicit_equation(curve, "moving_lines").mpoly

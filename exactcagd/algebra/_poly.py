@@ -43,6 +43,8 @@ __all__ = [
     "primitive_fmpz_polys",
     "common_factor",
     "mpoly_to_sympy",
+    "grevlex_full_poly",
+    "grevlex_triangle_poly",
     "sympy_to_mpoly",
     "normalize_implicit",
     "fmpq_poly_of",
@@ -284,7 +286,18 @@ def grevlex_full_poly(p, gens) -> sympy.Poly | None:
     d = int(p.total_degree())
     if len(coeffs) != _triangle(d):
         return None
-    if ZZ.dtype is not flint.fmpz:
+    return grevlex_triangle_poly(coeffs, d, gens)
+
+
+def grevlex_triangle_poly(coeffs, d: int, gens) -> sympy.Poly:
+    """The sympy ``Poly`` in the two ``gens`` whose coefficients, all non-zero integers, are
+    ``coeffs`` (all ``int`` or all flint ``fmpz``) in grevlex order (``x > y``) over the
+    monomials of total degree ``<= d`` (``x^d, x^(d-1) y, ..., y^d, x^(d-1), ..., 1``).
+
+    >>> grevlex_triangle_poly([1, 2, 3], 1, (X_SYM, Y_SYM)).as_expr()
+    x + 2*y + 3
+    """
+    if ZZ.dtype is not flint.fmpz or type(coeffs[0]) is not flint.fmpz:
         coeffs = [ZZ(int(c)) for c in coeffs]
     return sympy.Poly.new(DMP([[coeffs[k] for k in row] for row in _dense_rows_grevlex(d)], ZZ, 1), *gens)
 

@@ -3,8 +3,13 @@
 Three routes give the same implicit polynomial ``f(x, y)``:
 
 ``"resultant"``
-    ``Res_t(W(t) x - X(t), W(t) y - Y(t))`` (17.5), computed by python-flint's
-    subresultant algorithm (the fastest exact resultant available here).
+    ``Res_t(W(t) x - X(t), W(t) y - Y(t))`` (17.5).  When the fibre test
+    (:func:`proper_at_fiber`) proves the parametrization proper, the resultant is taken as
+    the determinant of its Bezout matrix (17.3.4), whose entries are linear in ``x, y``:
+    flint's integer determinant at the ``(n + 1)(n + 2) / 2`` points of a triangular grid,
+    interpolated exactly (``_bezout_interpolated``; 2x-5x faster than python-flint's
+    subresultant algorithm at n = 4..16).  Otherwise python-flint's resultant, whose
+    squarefree factorization gives the index.
 ``"bezier"``
     the ``n x n`` Bezout determinant in Bernstein form with the
     ``l_ij = C(n,i) C(n,j) w_i w_j |x y 1; x_i y_i 1; x_j y_j 1|`` (17.6).
@@ -31,15 +36,17 @@ x**2 - 2*x + y
 
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import flint
 import sympy
 
 from ..errors import InputError
 from ._diagnostics import BasePointError, BasePointWarning, ImproperParametrizationError, ImproperParametrizationWarning
-from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, grevlex_full_poly, mpoly_to_sympy, normalize_implicit, zctx
+from ._poly import X_SYM, XY, Y_SYM, check_not_constant, common_factor, curve_power, grevlex_full_poly, grevlex_triangle_poly, mpoly_to_sympy, normalize_implicit, zctx
 from .resultants import bezout_matrix_bernstein, det_bareiss, resultant_coeffs
 
 __all__ = [
@@ -75,7 +82,7 @@ class ImplicitEquation:
     curve_degree : degree of the reduced parametrization
     """
 
-    _raw: object  # the normalized equation, in XY or in _XYT without t
+    _raw: object  # the normalized equation: in XY, in _XYT without t, or a _GrevlexTriangle
     degree: int
     index: int
     base_factor: object
@@ -84,15 +91,22 @@ class ImplicitEquation:
 
     @property
     def mpoly(self):
-        if self._raw.context() is not XY:
+        if isinstance(self._raw, _GrevlexTriangle):
+            self._raw = self._raw.to_mpoly()
+        elif self._raw.context() is not XY:
             self._raw = self._raw.project_to_context(XY)
         return self._raw
 
     @property
     def poly(self) -> sympy.Poly:
         if self._poly is None:
-            # the dense rows straight from the grevlex term list (either context), else the general conversion
-            self._poly = grevlex_full_poly(self._raw, (X_SYM, Y_SYM)) or mpoly_to_sympy(self.mpoly, (X_SYM, Y_SYM))
+            # the dense rows straight from the grevlex term list, else the general conversion
+            raw = self._raw
+            if isinstance(raw, _GrevlexTriangle):
+                full = grevlex_triangle_poly(raw.coeffs, raw.degree, (X_SYM, Y_SYM)) if all(raw.coeffs) else None
+            else:
+                full = grevlex_full_poly(raw, (X_SYM, Y_SYM))
+            self._poly = full or mpoly_to_sympy(self.mpoly, (X_SYM, Y_SYM))
         return self._poly
 
     @property
@@ -181,6 +195,99 @@ def _flint_resultant_xy(X, Y, W):
 def _flint_applies(X, Y, W) -> bool:
     """flint needs both ``W x - X`` and ``W y - Y`` non-constant in t (else the curve is a line ``x = c``)."""
     return max(W.degree(), X.degree()) > 0 and max(W.degree(), Y.degree()) > 0
+
+
+@dataclass
+class _GrevlexTriangle:
+    """An integer polynomial in ``x, y`` of total degree ``degree`` as the list of its
+    coefficients (zeros included) over all monomials of total degree ``<= degree``, in
+    grevlex order ``x^d, x^(d-1) y, ..., y^d, x^(d-1), ..., 1``."""
+
+    degree: int
+    coeffs: list
+
+    def to_mpoly(self):
+        return XY.from_dict({m: c for m, c in zip(_grevlex_monomials(self.degree), self.coeffs) if c})
+
+
+@lru_cache(maxsize=64)
+def _grevlex_monomials(n: int) -> tuple:
+    """The exponents ``(i, j)``, ``i + j <= n``, in grevlex order (``x > y``, falling)."""
+    return tuple((k - j, j) for k in range(n, -1, -1) for j in range(k + 1))
+
+
+@lru_cache(maxsize=64)
+def _grid_inverse(n: int) -> flint.fmpz_mat:
+    """``D V^-1`` for an integer ``D > 0``, ``V`` the matrix of the monomials of
+    :func:`_grevlex_monomials` at the points ``(i, j)``, ``i + j <= n`` (``i`` outer, ``j`` inner).
+    The triangular grid is unisolvent for polynomials of total degree ``<= n``."""
+    V = flint.fmpz_mat([[i**a * j**b for a, b in _grevlex_monomials(n)] for i in range(n + 1) for j in range(n + 1 - i)])
+    return flint.fmpq_mat(V).inv().numer_denom()[0]
+
+
+@lru_cache(maxsize=64)
+def _hankel_toeplitz_positions(n: int) -> tuple:
+    """Positions in ``c + [0] * n`` (``c`` the ``n + 1`` coefficients, lowest first) of the
+    entries of ``H_c = (c_(i+l+1))`` and ``T_c = (c_(j-l))_(l <= j)`` (``n x n``, row-major)."""
+    zero = n + 1
+    hankel = tuple(i + l + 1 for i in range(n) for l in range(n))
+    toeplitz = tuple(j - l if j >= l else zero for l in range(n) for j in range(n))
+    return hankel, toeplitz
+
+
+def _bezout_pencil(X, Y, W, n: int) -> tuple:
+    """Integer ``n x n`` matrices ``(A_x, A_y, C)`` with ``Bez_n(W x - X, W y - Y) = x A_x + y A_y + C``.
+
+    ``Bez_n(f, g)`` is the Bezout matrix of formal degree ``n`` (notes 17.3.4: the
+    coefficients of ``(f(s) g(t) - f(t) g(s)) / (s - t)``), here in the form
+    ``H_f T_g - H_g T_f`` with ``H`` Hankel and ``T`` upper triangular Toeplitz (the brackets
+    ``f_k g_m - f_m g_k``, ``k + m = i + j + 1``, of :func:`resultants._bezout_rows`; the
+    terms with ``m > min(i, j)`` cancel in pairs).  It is bilinear and alternating, so the
+    ``x y`` term vanishes and ``A_x = Bez(Y, W)``, ``A_y = Bez(W, X)``, ``C = Bez(X, Y)``.
+    """
+    hankel, toeplitz = _hankel_toeplitz_positions(n)
+    H, T = [], []
+    for p in (X, Y, W):
+        c = p.coeffs()
+        c = c + [0] * (2 * n + 1 - len(c))
+        H.append(flint.fmpz_mat(n, n, [c[k] for k in hankel]))
+        T.append(flint.fmpz_mat(n, n, [c[k] for k in toeplitz]))
+    (Hx, Hy, Hw), (Tx, Ty, Tw) = H, T
+    return Hy * Tw - Hw * Ty, Hw * Tx - Hx * Tw, Hx * Ty - Hy * Tx
+
+
+def _bezout_interpolated(X, Y, W) -> _GrevlexTriangle | None:
+    """The implicit equation of a proper parametrization, normalized, from the determinant of
+    the Bezout matrix (notes 17.3.4): ``det Bez_n(W x - X, W y - Y) = c Res_t(W x - X, W y - Y)``
+    with an integer ``c != 0`` (one of the leading coefficients ``w_n x - x_n``, ``w_n y - y_n``
+    is a non-zero constant when ``w_n = 0``).  Its entries are linear in ``x, y``, so the
+    determinant, of total degree ``<= n``, is evaluated exactly (flint's integer determinant)
+    at the ``(n + 1)(n + 2) / 2`` points of the triangular grid and interpolated by one
+    product with the cached ``D V^-1``: integers, no resultant of polynomials.
+
+    ``None`` when the determinant vanishes (never for reduced, non-constant input).
+    """
+    n = max(X.degree(), Y.degree(), W.degree())
+    Ax, Ay, C = _bezout_pencil(X, Y, W, n)
+    values = []
+    row = C
+    for i in range(n + 1):
+        M = row
+        for _ in range(n + 1 - i):
+            values.append(M.det())
+            M = M + Ay
+        row = row + Ax
+    coeffs = (_grid_inverse(n) * flint.fmpz_mat(len(values), 1, values)).entries()
+    first = next((k for k, c in enumerate(coeffs) if c), None)
+    if first is None:  # pragma: no cover - the resultant of a reduced curve is not zero
+        return None
+    # normalize: content 1, positive grevlex leading coefficient (the first non-zero entry)
+    g = math.gcd(*[int(c) for c in coeffs])
+    if coeffs[first] < 0:
+        g = -g
+    d = _grevlex_monomials(n)[first]
+    d = d[0] + d[1]
+    return _GrevlexTriangle(d, [c // g for c in coeffs[len(coeffs) - (d + 1) * (d + 2) // 2:]])
 
 
 def _xy_coeff_lists(X, Y, W) -> tuple[list, list]:
@@ -368,6 +475,8 @@ def implicit_equation(curve, method: str = "resultant", strict: bool = False) ->
     if strict and g.degree() > 0:
         raise BasePointError(f"the parametrization has base points: X, Y, W share the factor {_in_t(g)} (notes 18.3.4)")
     n = max(X.degree(), Y.degree(), W.degree())
+    if method == "resultant" and proper and (F := _bezout_interpolated(X, Y, W)) is not None:
+        return ImplicitEquation(F, F.degree, 1, g, n)
     if method == "resultant":
         R = _flint_resultant_xyt(X, Y, W) if proper and _flint_applies(X, Y, W) else implicit_resultant(X, Y, W)
     elif method == "bezier":
