@@ -166,3 +166,15 @@ def test_higher_degrees_agree_with_the_moving_line_route():
         assert fast.index == 1 and fast.degree == n
         assert fast.poly == implicit_equation(curve, "moving_lines").poly
         assert fast.mpoly == implicit_equation(curve, "moving_lines").mpoly
+
+
+def test_sparse_equations_with_zero_leading_and_constant_terms():
+    """Equations by hand: zero coefficients at the front (x^3 missing) and at the end (no
+    constant term) of the grevlex list, and a negative first coefficient to flip."""
+    from exactcagd.algebra import curve_from_polynomials
+
+    cases = [(("t", "t**3"), x**3 - y), (("t**3", "t"), y**3 - x), (("-t", "t**3 + 2"), x**3 + y - 2)]
+    for (px, py), expected in cases:
+        eq = implicit_equation(curve_from_polynomials(px, py))
+        assert eq.poly.as_expr() == sp.expand(expected) and eq.index == 1
+        assert eq.mpoly == sympy_to_mpoly(sp.expand(expected), (x, y), XY)[0]

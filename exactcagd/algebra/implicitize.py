@@ -278,16 +278,19 @@ def _bezout_interpolated(X, Y, W) -> _GrevlexTriangle | None:
             M = M + Ay
         row = row + Ax
     coeffs = (_grid_inverse(n) * flint.fmpz_mat(len(values), 1, values)).entries()
-    first = next((k for k, c in enumerate(coeffs) if c), None)
+    first = 0 if coeffs[0] else next((k for k, c in enumerate(coeffs) if c), None)
     if first is None:  # pragma: no cover - the resultant of a reduced curve is not zero
         return None
-    # normalize: content 1, positive grevlex leading coefficient (the first non-zero entry)
-    g = math.gcd(*[int(c) for c in coeffs])
-    if coeffs[first] < 0:
-        g = -g
+    # normalize: content 1, positive grevlex leading coefficient (the first non-zero entry);
+    # the content and the exact division by it in one flint polynomial holding the list
+    packed = flint.fmpz_poly(coeffs[first:])
+    g = packed.content()
+    packed = packed // (-g if coeffs[first] < 0 else g)
     d = _grevlex_monomials(n)[first]
     d = d[0] + d[1]
-    return _GrevlexTriangle(d, [c // g for c in coeffs[len(coeffs) - (d + 1) * (d + 2) // 2:]])
+    size = (d + 1) * (d + 2) // 2
+    normalized = packed.coeffs()
+    return _GrevlexTriangle(d, [0] * (size - (len(coeffs) - first)) + normalized + [0] * (len(coeffs) - first - len(normalized)))
 
 
 def _xy_coeff_lists(X, Y, W) -> tuple[list, list]:
