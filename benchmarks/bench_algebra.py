@@ -167,6 +167,49 @@ def bench_implicit_floor(degrees, rounds: int = 5):
                            "goal <= 2x met", "floor / bare", "implicitize / floor"], rows)
 
 
+def bench_implicit_stages(degrees, calls: int = 3000):
+    """Time of each stage of implicitize on a proper curve (the Bezout-grid route), with
+    ``perf_counter_ns`` around each stage; 10th percentile over ``calls`` calls (cProfile is too
+    coarse at tens of microseconds)."""
+    import importlib
+
+    from exactcagd.algebra import _poly as P
+
+    I = importlib.import_module("exactcagd.algebra.implicitize")
+    names = ["curve_power", "common_factor", "proper_at_fiber", "Bezout pencil", "grid determinants", "interpolate + normalize", "sympy Poly"]
+    rows = []
+    ns = time.perf_counter_ns
+    for n in degrees:
+        curve = curve_instance(n)
+        acc = {k: [] for k in names}
+        whole = []
+        for _ in range(calls):
+            t = [ns()]
+            X, Y, W = P.curve_power(curve)
+            t.append(ns())
+            g, (X, Y, W) = P.common_factor(X, Y, W)
+            t.append(ns())
+            I.proper_at_fiber(X, Y, W)
+            t.append(ns())
+            pencil = I._bezout_pencil(X, Y, W, n)
+            t.append(ns())
+            values = I._grid_determinants(*pencil, n)
+            t.append(ns())
+            F = I._interpolated_normalized(values, n)
+            t.append(ns())
+            I.ImplicitEquation(F, F.degree, 1, g, n).poly
+            t.append(ns())
+            for k, name in enumerate(names):
+                acc[name].append(t[k + 1] - t[k])
+            t0 = ns()
+            implicitize(curve)
+            whole.append(ns() - t0)
+        p10 = lambda v: sorted(v)[len(v) // 10] / 1e3  # noqa: E731
+        rows.append([n, f"{p10(whole):.1f} us"] + [f"{p10(acc[k]):.1f} us" for k in names])
+        print("stages", rows[-1], flush=True)
+    return markdown_table(["n", "implicitize (whole call)"] + names, rows)
+
+
 def bench_univariate(degrees, budget):
     import flint
 
@@ -498,6 +541,7 @@ def main():
     tools = ["flint res", "sympy res", "Sylvester", "Bezout nxn", "Bezier l_ij", "ML det", "ML flint", "implicitize"]
     table, rows, raw = bench_implicit(degrees, budget)
     floor = bench_implicit_floor(degrees)
+    stages = bench_implicit_stages([3, 4, 5])
     uni = bench_univariate([10, 20, 40] if quick else [10, 20, 40, 80], budget)
     names = list(_gb_problems())
     if quick:  # katsura-4 lex alone takes > 20 s for two engines
@@ -513,7 +557,10 @@ def main():
         "The (n - mu) x (n - mu) matrix is smaller, but the mu-basis coefficients are about n/2 times "
         "longer than the control points (a few hundred bits at n = 16 for 10-bit input), so in exact arithmetic "
         "the smaller determinant pays off only in part of the range; python-flint's subresultant resultant of the "
-        "original pair (Res_t(W x - X, W y - Y)) is the fastest route throughout and is implicitize()'s default."
+        "original pair (Res_t(W x - X, W y - Y)) is the fastest of these polynomial routes.  implicitize()'s default "
+        "for a curve proved proper by the fibre test avoids polynomial arithmetic altogether: the Bezout determinant "
+        "(17.3.4), linear in x, y, evaluated by flint's integer determinant on a triangular grid and interpolated "
+        "(faster than the bare flint resultant from n = 5 on, see the issue 18 table)."
     )
     body = "\n\n".join(
         [
@@ -526,8 +573,14 @@ def main():
             "Minimum per call over 5 interleaved rounds of 10 x 20 calls (3 calls for n >= 6), same curves.  "
             "`bare` = python-flint's `fmpz_mpoly` resultant of prebuilt `W x - X`, `W y - Y`; `floor` = the same call "
             "plus what implicitize must return, the sympy `Poly` in x, y (projection to Z[x, y] and `mpoly_to_sympy`).  "
-            "floor / bare is the least ratio any implementation returning the documented type can reach.",
+            "floor / bare is the least ratio a route through the polynomial resultant can reach; implicitize no longer "
+            "takes that route for a curve proved proper (the fibre test): it interpolates the Bezout determinant "
+            "(17.3.4), whose entries are linear in x, y, from flint integer determinants on the grid i + j <= n, so it "
+            "can fall below the floor and the bare call.",
             floor,
+            "Stages of that route (`perf_counter_ns` around each, 10th percentile of 3000 calls; the whole call "
+            "measured separately, so the columns need not add up exactly):",
+            stages,
             f"Scaling plot (time against n, log scale): `{plot.name}`.",
             "## Peers: exact algebra (issue 10), same curves, same run",
             "Resultant Res_t(W x - X, W y - Y) (= implicitization up to normalization); ratio > 1: exactcagd is faster. "

@@ -268,7 +268,11 @@ def _bezout_interpolated(X, Y, W) -> _GrevlexTriangle | None:
     ``None`` when the determinant vanishes (never for reduced, non-constant input).
     """
     n = max(X.degree(), Y.degree(), W.degree())
-    Ax, Ay, C = _bezout_pencil(X, Y, W, n)
+    return _interpolated_normalized(_grid_determinants(*_bezout_pencil(X, Y, W, n), n), n)
+
+
+def _grid_determinants(Ax, Ay, C, n: int) -> list:
+    """``det(i A_x + j A_y + C)`` at the grid points ``(i, j)``, ``i + j <= n`` (``i`` outer)."""
     values = []
     row = C
     for i in range(n + 1):
@@ -277,19 +281,24 @@ def _bezout_interpolated(X, Y, W) -> _GrevlexTriangle | None:
             values.append(M.det())
             M = M + Ay
         row = row + Ax
+    return values
+
+
+def _interpolated_normalized(values: list, n: int) -> _GrevlexTriangle | None:
+    """The polynomial of total degree ``<= n`` taking ``values`` on the grid of
+    :func:`_grid_determinants`, made primitive with a positive grevlex leading coefficient
+    (``None`` if it is zero)."""
     coeffs = (_grid_inverse(n) * flint.fmpz_mat(len(values), 1, values)).entries()
     first = 0 if coeffs[0] else next((k for k, c in enumerate(coeffs) if c), None)
     if first is None:  # pragma: no cover - the resultant of a reduced curve is not zero
         return None
-    # normalize: content 1, positive grevlex leading coefficient (the first non-zero entry);
     # the content and the exact division by it in one flint polynomial holding the list
     packed = flint.fmpz_poly(coeffs[first:])
     g = packed.content()
-    packed = packed // (-g if coeffs[first] < 0 else g)
+    normalized = (packed // (-g if coeffs[first] < 0 else g)).coeffs()
     d = _grevlex_monomials(n)[first]
     d = d[0] + d[1]
     size = (d + 1) * (d + 2) // 2
-    normalized = packed.coeffs()
     return _GrevlexTriangle(d, [0] * (size - (len(coeffs) - first)) + normalized + [0] * (len(coeffs) - first - len(normalized)))
 
 
