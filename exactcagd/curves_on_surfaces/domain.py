@@ -167,9 +167,10 @@ class DomainCurve:
             return row[0] / row[2], row[1] / row[2]
         rows = self.homs[k].tolist()
         n = len(rows) - 1
-        s = 1 - t
-        basis = [bz.binomial(n, i) * t**i * s ** (n - i) for i in range(n + 1)]
-        x, y, w = (sum(b * row[c] for b, row in zip(basis, rows)) for c in range(3))
+        # t = a / (a + c): the factor (a + c)^-n of every basis value cancels in x / w, y / w
+        a, c = t.numerator, t.denominator - t.numerator
+        basis = [bz.binomial(n, i) * a**i * c ** (n - i) for i in range(n + 1)]
+        x, y, w = (sum(b * row[j] for b, row in zip(basis, rows)) for j in range(3))
         return x / w, y / w
 
     def derivative_direction(self, k: int, t) -> tuple:
