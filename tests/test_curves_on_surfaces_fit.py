@@ -307,3 +307,29 @@ def test_constant_domain_curve_is_refused(method):
     point = BezierCurve([["1/3", "1/4"]] * 4, weights=[1, 2, 3, 1])
     with pytest.raises(DomainError, match="constant"):
         approximate(_bicubic(False), point, "1e-3", method=method)
+
+
+def test_dyadic_domain_piece_is_the_restricted_curve():
+    """The domain piece of a bisected fit segment, [k, k + 1] / 2^j, is the curve restricted and
+    reparametrized: its homogeneous de Casteljau value at s equals the original's at
+    a + (b - a) s (Fractions, up to the common homogeneous factor: compared dehomogenized)."""
+    rng = random.Random(8)
+
+    def value(rows, t):
+        level = [list(r) for r in rows]
+        while len(level) > 1:
+            level = [[(1 - t) * p + t * q for p, q in zip(r0, r1)] for r0, r1 in zip(level[:-1], level[1:])]
+        return [c / level[0][-1] for c in level[0][:-1]]
+
+    for trial in range(30):
+        n = rng.randint(1, 5)
+        rows = [[Fr(rng.randint(-99, 99), rng.randint(1, 9)) for _ in range(2)] + [Fr(rng.randint(1, 9), rng.randint(1, 9)) if trial % 2 else Fr(1)]
+                for _ in range(n + 1)]
+        hom = np.array([[mpq(x.numerator, x.denominator) for x in r] for r in rows], dtype=object)
+        j = rng.randint(1, 5)
+        k = rng.randint(0, 2**j - 1)
+        a, b = Fr(k, 2**j), Fr(k + 1, 2**j)
+        piece = fit._dyadic_piece(hom, mpq(k, 2**j), mpq(k + 1, 2**j))
+        got = [[Fr(int(x.numerator), int(x.denominator)) for x in r] for r in piece.tolist()]
+        for s in (Fr(0), Fr(1, 3), Fr(1)):
+            assert value(got, s) == value(rows, a + (b - a) * s)

@@ -352,6 +352,21 @@ def _joint_image(grid, key, joint, domain_row, image_row) -> tuple:
     return _surface_point(grid, key, joint.point)
 
 
+def _dyadic_piece(hom: np.ndarray, a: mpq, b: mpq) -> np.ndarray:
+    """``bz.restrict(hom, a, b)`` for a piece of the fit's bisection (``[a, b] = [k, k + 1] / 2^j``):
+    ``j`` exact halvings in integers (:meth:`~exactcagd.composition.fast.ScaledBernstein.halves`),
+    the same rational coefficients as the polar-form restriction at a fraction of its cost."""
+    width = b - a
+    depth = int(width.denominator).bit_length() - 1
+    if width.numerator != 1 or width.denominator != 1 << depth:  # pragma: no cover - bisection pieces are dyadic
+        return bz.restrict(hom, a, b)
+    index = int(a / width)
+    node = ScaledBernstein.from_homogeneous(hom)
+    for level in range(depth - 1, -1, -1):  # the bits of k, most significant first: 0 left, 1 right
+        node = node.halves()[(index >> level) & 1]
+    return node.homogeneous()
+
+
 def _pieces(joints):
     """Consecutive kept joints ``(ja, jb)``: each pair bounds one exact image piece."""
     kept = [j for j in joints if _KEEP.intersection(j.reasons)]
@@ -389,7 +404,7 @@ def approximate_fit(grid, dcurve, joints, tol: mpq, max_degree: int, max_segment
             segments.append(ctrl)
             bounds.append(bound)
             patches.append(key)
-            domains.append(BezierCurve.from_homogeneous(glob if (a, b) == (0, 1) else bz.restrict(glob, a, b)))
+            domains.append(BezierCurve.from_homogeneous(glob if (a, b) == (0, 1) else _dyadic_piece(glob, a, b)))
             params.append({"piece": k, "interval": [str(ta + (tb - ta) * a), str(ta + (tb - ta) * b)],
                            "fit_degree": ctrl.shape[0] - 1})
             span0, span1 = dcurve.spans[k]
