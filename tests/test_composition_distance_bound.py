@@ -119,22 +119,28 @@ def test_ball_and_exact_bisections_agree_to_high_precision():
     assert flint.ctx.prec == 53  # the working precision is untouched
 
 
-def test_halving_matrix_is_de_casteljau_at_one_half():
-    """2^-n times the integer matrix gives both halves' Bernstein coefficients; reference:
-    the de Casteljau triangle at t = 1/2 in Fractions (its two edges, notes 2.3)."""
-    from exactcagd.composition.distance_bound import _halving_matrix
+def test_scaled_halves_are_de_casteljau_at_one_half():
+    """``2^-n`` times the halves of the scaled form ``s_i = C(n, i) b_i``, divided by ``C(n, i)``,
+    are both halves' Bernstein coefficients; reference: the de Casteljau triangle at t = 1/2
+    in Fractions (its two edges, notes 2.3)."""
+    import flint
 
-    for n in (1, 2, 5, 9):
+    from exactcagd.composition.fast import scaled_halves
+
+    for n in (0, 1, 2, 5, 9, 36):
         b = [Fr((7 * i * i - 3 * i + 2) % 11 - 5, 3) for i in range(n + 1)]
+        b[0] = b[-1] = Fr(0)  # zero ends: the mirror image loses its trailing coefficients
         rows, left, right = [b], [b[0]], [b[-1]]
         while len(rows[-1]) > 1:
             prev = rows[-1]
             rows.append([(x + y) / 2 for x, y in zip(prev[:-1], prev[1:])])
             left.append(rows[-1][0])
             right.append(rows[-1][-1])
-        matrix = _halving_matrix(n).tolist()
-        got = [sum(Fr(int(m)) * x for m, x in zip(row, b)) / 2**n for row in matrix]
-        assert got == left + right[::-1]
+        scaled = [flint.fmpz(int(3 * x * comb(n, i))) for i, x in enumerate(b)]  # 3 b_i is integral
+        got_left, got_right = scaled_halves(scaled, n)
+        assert len(got_left) == len(got_right) == n + 1
+        assert [Fr(int(v), 3 * 2**n * comb(n, i)) for i, v in enumerate(got_left)] == left
+        assert [Fr(int(v), 3 * 2**n * comb(n, i)) for i, v in enumerate(got_right)] == right[::-1]
 
 
 def _bump_case(rational: bool, delta: Fr):

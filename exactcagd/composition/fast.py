@@ -45,7 +45,7 @@ from ..exact import bernstein as bz
 from ..exact.scalars import to_fmpq as _fmpq
 from ..exact.scalars import to_rational
 
-__all__ = ["ScaledBernstein", "compose_homogeneous_fast", "compose_scaled", "scaled", "unscaled"]
+__all__ = ["ScaledBernstein", "compose_homogeneous_fast", "compose_scaled", "scaled", "scaled_halves", "unscaled"]
 
 _MPQ = type(mpq(0))
 
@@ -327,16 +327,11 @@ class ScaledBernstein:
         [['0', '1/2'], ['1/2', '1']]
         """
         n = self.degree
-        sub = flint.fmpz_poly([1, 2])
         den = self.denominator << n
-
-        def reverse(p):
-            c = p.coeffs()
-            return flint.fmpz_poly((c + [0] * (n + 1 - len(c)))[::-1])
-
         cols = self.columns if self.weight is None else self.columns + [self.weight]
-        left = [reverse(reverse(p)(sub)) for p in cols]
-        right = [p(sub) for p in cols]
+        pairs = [scaled_halves(p.coeffs(), n) for p in cols]
+        left = [flint.fmpz_poly(a) for a, _ in pairs]
+        right = [flint.fmpz_poly(b) for _, b in pairs]
         if self.weight is None:
             return ScaledBernstein(left, None, den, n), ScaledBernstein(right, None, den, n)
         return ScaledBernstein(left[:-1], left[-1], den, n), ScaledBernstein(right[:-1], right[-1], den, n)
@@ -351,6 +346,29 @@ class ScaledBernstein:
             coeffs = poly.coeffs()
             out[:, k] = [int(a) / q for a, q in zip(coeffs, denominators)] + [0.0] * (n + 1 - len(coeffs))
         return out
+
+
+_SUBSTITUTION = flint.fmpz_poly([1, 2])
+
+
+def scaled_halves(s: list, n: int) -> tuple[list, list]:
+    """``2^n`` times the scaled Bernstein coefficients of both halves (``[0, 1/2]``, ``[1/2, 1]``)
+    of the degree-``n`` scaled form with coefficients ``s`` (flint or Python integers, at most
+    ``n + 1``), as two lists of ``n + 1`` flint integers.
+
+    With ``x = t / (1 - t)`` the right half is ``s(1 + 2x)`` and the left half its mirror
+    image ``rev(rev(s)(1 + 2x))`` (``rev`` reverses the ``n + 1`` coefficients, which reverses
+    the Bernstein coefficients): de Casteljau at ``1/2`` (notes 2.3) as two Taylor-type
+    substitutions, no rational arithmetic.
+
+    >>> scaled_halves([0, 2, 2], 2)   # 2t: Bernstein (0, 1, 2); halves t, 1 + t: (0, 1/2, 1), (1, 3/2, 2)
+    ([0, 4, 4], [4, 12, 8])
+    """
+    pad = [flint.fmpz(0)] * (n + 1)
+    s = list(s) + pad[len(s):]
+    right = flint.fmpz_poly(s)(_SUBSTITUTION).coeffs()
+    mirrored = flint.fmpz_poly(s[::-1])(_SUBSTITUTION).coeffs()
+    return (mirrored + pad[len(mirrored):])[::-1], right + pad[len(right):]
 
 
 @lru_cache(maxsize=256)
