@@ -304,8 +304,9 @@ def main(quick: bool | None = None) -> None:
         + ("OpenCASCADE not installed: its rows are skipped.\n\n" if occ is None else "")
         + "## Goals (issue 18): parabola <= 100x OCC, fit <= 10x OCC (minimum times, same run)\n\n"
         "OCC = `Approx_CurveOnSurface` (degree <= 14, <= 30 segments; uncertified).  'certified by' counts the accepted "
-        "certificates decided in ball arithmetic (python-flint arb) or, where a ball test was inconclusive, in exact "
-        "rationals.  'floor' is the bare python-flint composition of the same S(D(t)) "
+        "certificates decided in outward-rounded arithmetic ('ball': binary64 intervals and python-flint arb balls "
+        "for the on-surface methods' Hausdorff bounds, Bernstein coefficients rounded outward to 128 bits for the fit) "
+        "or, where that was inconclusive, in exact rationals.  'floor' is the bare python-flint composition of the same S(D(t)) "
         "(`bench_compose.bare_flint_packed`, minimum time) as a ratio to OCC: a certificate of |F - C| needs an "
         "enclosure of F, so no certified route can be faster than computing F.\n\n"
         + markdown_table(["surface", "method", "tol", "exactcagd segments", "certified by", "exactcagd (min)", "OCC (min)",
