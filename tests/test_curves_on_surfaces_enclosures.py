@@ -26,8 +26,8 @@ from exactcagd.curves_on_surfaces.samples import analytic_surface, closed_domain
 
 
 # ----------------------------------------------------------------------------- reference
-def _restrict(hom, a, b):
-    """Exact control points of the restriction to [a, b] (two de Casteljau splits, Fractions)."""
+def _restrict_coeffs(points, a, b):
+    """Restriction of a Bézier polynomial with vector coefficients to [a, b] (Fractions)."""
 
     def split(rows, t):
         left, right, level = [rows[0]], [rows[-1]], rows
@@ -37,10 +37,16 @@ def _restrict(hom, a, b):
             right.append(level[-1])
         return left, right[::-1]
 
+    rows, _ = split(points, b)
+    if a:
+        _, rows = split(rows, a / b)
+    return rows
+
+
+def _restrict(hom, a, b):
+    """Exact control points of the restriction to [a, b] (two de Casteljau splits, Fractions)."""
     rows = [[Fraction(int(x.numerator), int(x.denominator)) for x in row] for row in hom]
-    rows, _ = split(rows, b)
-    _, rows = split(rows, a / b)
-    return [(r[0] / r[2], r[1] / r[2]) for r in rows]
+    return [(r[0] / r[2], r[1] / r[2]) for r in _restrict_coeffs(rows, a, b)]
 
 
 def _seg_sq(p, a, b):
@@ -210,23 +216,6 @@ def test_derivative_cell_bounds_equal_the_restricted_nets(cell, rational):
         rows = [_restrict_coeffs(r, Fraction(cv, n), Fraction(cv + 1, n)) for r in rows]
         best = max(sum(x * x for x in p[:-1]) / (p[-1] * p[-1]) for r in rows for p in r)
         assert Fraction(int(value.numerator), int(value.denominator)) == best
-
-
-def _restrict_coeffs(points, a, b):
-    """Restriction of a Bézier polynomial with vector coefficients to [a, b] (Fractions)."""
-
-    def split(rows, t):
-        left, right, level = [rows[0]], [rows[-1]], rows
-        while len(level) > 1:
-            level = [[(1 - t) * x + t * y for x, y in zip(r0, r1)] for r0, r1 in zip(level[:-1], level[1:])]
-            left.append(level[0])
-            right.append(level[-1])
-        return left, right[::-1]
-
-    rows, _ = split(points, b)
-    if a:
-        _, rows = split(rows, a / b)
-    return rows
 
 
 @pytest.mark.parametrize("kind", ["segment", "hyperbola", "parabola"])
