@@ -307,8 +307,9 @@ def main(quick: bool | None = None) -> None:
         "certificates decided in outward-rounded arithmetic ('ball': binary64 intervals and python-flint arb balls "
         "for the on-surface methods' Hausdorff bounds, Bernstein coefficients rounded outward to 128 bits for the fit) "
         "or, where that was inconclusive, in exact rationals.  'floor' is the bare python-flint composition of the same S(D(t)) "
-        "(`bench_compose.bare_flint_packed`, minimum time) as a ratio to OCC: a certificate of |F - C| needs an "
-        "enclosure of F, so no certified route can be faster than computing F.\n\n"
+        "(`bench_compose.bare_flint_packed`, minimum time) as a ratio to OCC: the fit's certificate bounds |F - C| "
+        "against the exact F, so this route cannot be faster than computing F (a certified float enclosure of F "
+        "in its place could be).\n\n"
         + markdown_table(["surface", "method", "tol", "exactcagd segments", "certified by", "exactcagd (min)", "OCC (min)",
                           "ratio", "floor: bare flint S(D(t)) (min) / OCC", "goal", "met"], goals)
         + "\n\n## All rows\n\n"
