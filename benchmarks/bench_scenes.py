@@ -23,7 +23,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from ._common import markdown_table, measure, parse_quick, write_result
+from ._common import fmt_bytes, markdown_table, measure, parse_quick, write_result
 
 
 def large_scene(nu: int = 145, nv: int = 55) -> dict:
@@ -74,36 +74,67 @@ def run_eager(scene_dict: dict):
 EXAMPLE_SCENE = Path(__file__).resolve().parent.parent / "examples" / "scenes" / "hill_trim.toml"
 
 
-def run_in_process(out_dir) -> float:
-    """Seconds of one ``Runner.run`` of the example scene into ``out_dir`` (cache inside it)."""
+def run_in_process(out_dir, traced: bool = False) -> float | int:
+    """Seconds of one ``Runner.run`` of the example scene into ``out_dir``; with ``traced``, its
+    tracemalloc peak in bytes instead (tracing slows the run, so the two are separate runs)."""
+    import tracemalloc
+
     from exactcagd.scenes.runner import Runner
     from exactcagd.scenes.spec import load_scene
 
+    if traced:
+        tracemalloc.start()
     start = time.perf_counter()
     Runner(load_scene(EXAMPLE_SCENE), out_dir).run(progress=lambda line: None)
-    return time.perf_counter() - start
+    seconds = time.perf_counter() - start
+    if not traced:
+        return seconds
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    return peak
 
 
-def run_command(out_dir) -> float:
-    """Wall seconds of ``exactcagd run <scene> --out out_dir`` (the console script's entry, a fresh interpreter)."""
-    command = "import sys; from exactcagd.cli import main; sys.exit(main(sys.argv[1:]))"
+#: the command, reporting its peak resident memory: VmHWM of /proc/self/status belongs to the
+#: process image since exec (ru_maxrss would carry over the forking benchmark's own peak)
+_COMMAND = (
+    "import atexit, sys\n"
+    "def report():\n"
+    "    for line in open('/proc/self/status'):\n"
+    "        if line.startswith('VmHWM:'):\n"
+    "            print('VMHWM', line.split()[1], file=sys.stderr)\n"
+    "atexit.register(report)\n"
+    "from exactcagd.cli import main\n"
+    "sys.exit(main(sys.argv[1:]))\n"
+)
+
+
+def run_command(out_dir, traced: bool = False) -> float | int:
+    """Wall seconds of ``exactcagd run <scene> --out out_dir`` (the console script's entry in a
+    fresh interpreter); with ``traced``, its peak resident memory in bytes instead."""
     start = time.perf_counter()
-    subprocess.run([sys.executable, "-c", command, "run", str(EXAMPLE_SCENE), "--out", str(out_dir)],
-                   check=True, capture_output=True)
-    return time.perf_counter() - start
+    done = subprocess.run([sys.executable, "-c", _COMMAND, "run", str(EXAMPLE_SCENE), "--out", str(out_dir)],
+                          check=True, capture_output=True, text=True)
+    seconds = time.perf_counter() - start
+    return int(done.stderr.rsplit("VMHWM", 1)[1].split()[0]) * 1024 if traced else seconds  # kB
 
 
 def cache_rows(repeat: int) -> list:
-    """First run vs rerun from the cache, in-process and as a command; minima of ``repeat`` fresh folders."""
+    """First run vs rerun from the cache, in-process and as a command: minimum times of ``repeat``
+    fresh folders, then one more fresh folder for the peak memory of each (tracemalloc in-process,
+    peak resident as a command)."""
     rows = []
-    for label, runner in (("in-process `Runner.run`", run_in_process), ("command `exactcagd run`", run_command)):
+    for label, runner in (("in-process `Runner.run` (tracemalloc peak)", run_in_process),
+                          ("command `exactcagd run` (peak resident)", run_command)):
         first, rerun = [], []
         for _ in range(repeat):
             with tempfile.TemporaryDirectory() as tmp:
                 first.append(runner(tmp))
                 rerun.append(runner(tmp))
+        with tempfile.TemporaryDirectory() as tmp:
+            peaks = runner(tmp, traced=True), runner(tmp, traced=True)
         ratio = min(rerun) / min(first)
-        rows.append([label, f"{min(first):.3f} s", f"{min(rerun):.3f} s", f"{ratio:.3f}x", "yes" if ratio <= 0.1 else "no"])
+        rows.append([label, f"{min(first):.3f} s", f"{min(rerun):.3f} s", f"{ratio:.3f}x", "yes" if ratio <= 0.1 else "no",
+                     fmt_bytes(peaks[0]), fmt_bytes(peaks[1])])
     return rows
 
 
@@ -143,7 +174,8 @@ def main(quick: bool = False) -> None:
         f"The README's scene `{EXAMPLE_SCENE.relative_to(EXAMPLE_SCENE.parents[2])}` (every product and its pictures): "
         "first run into a fresh output folder, then the same run again (every product and picture loaded from "
         "the content cache and copied into place).  Minimum of 3 fresh folders each.\n\n"
-        + markdown_table(["how", "first run", "rerun from the cache", "rerun / first", "goal <= 0.1x met"], cache_rows(3))
+        + markdown_table(["how", "first run", "rerun from the cache", "rerun / first", "goal <= 0.1x met", "peak memory, first",
+                          "peak memory, rerun"], cache_rows(3))
     )
     print(write_result("scenes", "Scenes: lazy planner, rerun from the cache", body).read_text())
 
