@@ -349,6 +349,26 @@ def test_notes_7_3_1_order_of_contact():
             assert box.t1_interval[1] - box.t1_interval[0] < 1e-12
 
 
+@pytest.mark.parametrize("method", ["subdivision", "interval", "clipping"])
+def test_fallback_beyond_the_limits_returns_the_uncertified_box(method):
+    """A tangency the float routes cannot certify goes to the exact route; when that route
+    would exceed exactcagd.limits (here max_implicit_degree lowered below the degree), the
+    float route's box comes back uncertified, still holding the point -- no LimitError
+    for a float method.  Reference: y = (x - 1/2)^2 touches y = 0 at t = 1/2 (by hand)."""
+    from exactcagd import limits
+
+    parabola = BezierCurve([[0, "1/4"], ["1/2", "-1/4"], [1, "1/4"]])
+    axis = BezierCurve([[-1, 0], [2, 0]])
+    t2 = mpq(1, 2)  # x = -1 + 3 t2 = 1/2 on the axis
+    with limits.raised(max_implicit_degree=1):
+        out = intersect(parabola, axis, method=method)
+    (box,) = [x for x in out if x.contains(mpq(1, 2), t2)]
+    assert not box.certified
+    answered = intersect(parabola, axis, method=method)  # default limits: the exact route answers
+    (exact_box,) = [x for x in answered if x.contains(mpq(1, 2), t2)]
+    assert exact_box.certified and exact_box.kind == "tangent" and exact_box.multiplicity == 2
+
+
 def test_half_circle_control_net_is_a_circle():
     """Sanity of the reference curve above (independent: sympy)."""
     c = BezierCurve([[0, -1], [2, -1], [2, 1], [0, 1]], weights=[3, 1, 1, 3])

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...errors import InputError
+from ...errors import InputError, LimitError
 from ...exact.scalars import to_tolerance
 from .certify import _certify, _endpoint_intersections
 from .clipping import _clipping
@@ -106,8 +106,10 @@ def intersect(curve1, curve2, method: str = "subdivision", tol: float = 1e-12, *
         enclosures are the proven ones, often tighter.
     fallback : {"exact", None}
         What happens to boxes a float route cannot certify (tangencies, clusters,
-        shared curves, work bound reached): ``"exact"`` answers them by the exact route;
-        ``None`` returns them uncertified.
+        shared curves, work bound reached): ``"exact"`` answers them by the exact route
+        while that stays within :mod:`exactcagd.limits` (``max_implicit_degree``: beyond
+        it the boxes come back uncertified, as with ``None``; raise the limit with
+        ``limits.raised(...)`` to have them answered); ``None`` returns them uncertified.
     max_work : int or None
         Work bound of the float routes (pairs of pieces examined) before the fallback;
         ``None``: :func:`default_work` of the degrees (200-5000).
@@ -168,17 +170,28 @@ def intersect(curve1, curve2, method: str = "subdivision", tol: float = 1e-12, *
                 return result
         budget = _Guard(max_work or default_work(curve1.degree, curve2.degree))
         rects = route(c1, c2, max(tol, 64 * U), budget)
+        result = None
         if budget.budget < 0 and fallback == "exact":
-            result = intersect_exact(curve1, curve2, progress)
-        else:
+            result = _exact_within_limits(curve1, curve2, progress)
+        if result is None:
             items = _certify(c1, c2, rects, max(tol, 64 * U), _endpoint_intersections(curve1, curve2))
             if fallback == "exact" and any(not x.certified for x in items):
-                result = intersect_exact(curve1, curve2, progress)
-            else:
+                result = _exact_within_limits(curve1, curve2, progress)
+            if result is None:
                 result = IntersectionResult(items)
     if overlaps == "raise":
         result.points()
     return result
+
+
+def _exact_within_limits(curve1, curve2, progress) -> IntersectionResult | None:
+    """The exact route's answer, or ``None`` when it refuses by a limit of
+    :mod:`exactcagd.limits` (checked from the degrees before its work): the float route's
+    uncertified boxes then stand, as with ``fallback=None``."""
+    try:
+        return intersect_exact(curve1, curve2, progress)
+    except LimitError:
+        return None
 
 
 def _finite(curve) -> bool:
