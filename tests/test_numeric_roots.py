@@ -546,15 +546,20 @@ def test_exact_method_irrational_roots_at_the_float_limits(power):
 def test_exact_method_root_near_a_rounding_boundary_falls_back_to_bisection(monkeypatch):
     """A root within 2^-300 of the midpoint h between 1/2 and the next float: the balls at 64
     and 192 bits cannot decide the rounding, and the exact bisection route answers, with the
-    root correctly rounded up (it exceeds h).  Reference: sympy, as above."""
+    root correctly rounded up (it exceeds h); the Descartes route (the default for these long
+    coefficients) rounds it the same way.  Reference: sympy, as above."""
     import exactcagd.numeric.roots as roots_module
 
     h = mpq(1, 2) + mpq(1, 2**54)
     target = h * h + mpq(1, 2**300)
     power = as_coefficients([-target, 0, 1])  # t^2 - target: root just above h
+    # its ~600-bit coefficients take the Descartes route by default: the same answer
+    (root,) = assert_exact_method_matches_sympy(from_power(power))
+    assert root.certified and root.t == math.nextafter(0.5, 1.0)
     calls = []
     original = roots_module._roots_by_bisection
     monkeypatch.setattr(roots_module, "_roots_by_bisection", lambda *a: calls.append(a) or original(*a))
+    monkeypatch.setattr(roots_module, "LARGE_COEFFICIENT_BITS", 10**6)  # force the ball route
     (root,) = assert_exact_method_matches_sympy(from_power(power))
     assert calls and root.certified and root.t == math.nextafter(0.5, 1.0)
 
@@ -595,3 +600,50 @@ def test_exact_method_restores_flint_precision():
     before = flint.ctx.prec
     bernstein_roots([1, -3, 1, 5, -2], method="exact")
     assert flint.ctx.prec == before
+
+
+# ---------------------------------------------------------------------------- huge coefficients
+def _sympy_roots_in_unit_interval(c):
+    """Reference: sympy's real-root intervals (width <= 2^-90) of sum C(n,i) c_i t^i (1-t)^(n-i)."""
+    t = sympy.Symbol("t")
+    n = len(c) - 1
+    poly = sympy.Poly(sympy.expand(sum(sympy.binomial(n, i) * c[i] * t**i * (1 - t) ** (n - i) for i in range(n + 1))), t)
+    return [((a + b) / 2, m) for (a, b), m in poly.intervals(eps=sympy.Rational(1, 2**90)) if 0 <= a and b <= 1]
+
+
+def test_huge_coefficients_answer_in_bounded_time():
+    """Bernstein coefficients [c, -1, 1] with a 20,000-bit c: a complex pair within ~c^(-1/2)
+    of t = 1 and no real root.  flint's complex_roots needs minutes for this from ~2000 bits
+    (found by the slow fuzz run); the Descartes route answers at once, and agrees with sympy
+    at 1000 bits."""
+    import time
+
+    rng = random.Random(11)
+    for bits in (1000, 20_000):
+        c = [rng.getrandbits(bits) << bits, -1, 1]
+        start = time.perf_counter()
+        assert bernstein_roots(c, method="exact") == []
+        assert time.perf_counter() - start < 5.0
+    c = [rng.getrandbits(1000) << 1000, -1, 1]
+    assert _sympy_roots_in_unit_interval(c) == []
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_huge_coefficients_with_roots_match_sympy(seed):
+    """Coefficients of 300-900 bits (the Descartes route) with planted rational and
+    quadratic-irrational roots in (0, 1) (the irrational ones found by exact bisection into
+    one float step): same roots and multiplicities as sympy, each float the correctly
+    rounded root, each enclosure one float step around it."""
+    rng = random.Random(seed)
+    t = sympy.Symbol("t")
+    big = 2 ** rng.randint(300, 900)
+    factors = [(t - sympy.Rational(rng.randint(1, 99), 100)) ** rng.randint(1, 2), t**2 - sympy.Rational(rng.randint(2, 50), 97)]
+    power = sympy.Poly(sympy.expand(big * sympy.Mul(*factors)), t)
+    c = list(from_power(np.array([mpq(int(k.p), int(k.q)) for k in reversed(power.all_coeffs())], dtype=object)))
+    ref = _sympy_roots_in_unit_interval(c)
+    got = bernstein_roots(c, method="exact")
+    assert [r.multiplicity for r in got] == [m for _, m in ref]
+    for r, (x, _) in zip(got, ref):
+        assert r.t == float(x)  # x within 2^-90 of the root: rounds as the root unless at a tie
+        lo, hi = r.interval
+        assert lo <= x <= hi and (lo == hi or hi == math.nextafter(lo, math.inf))

@@ -184,6 +184,19 @@ def _vca(b: list[int]) -> list[tuple[mpq, mpq]]:
     return out
 
 
+def isolate_in_unit_interval(poly: flint.fmpz_poly) -> list[tuple[mpq, mpq]]:
+    """Isolating intervals of the roots in [0, 1] of a square-free integer polynomial
+    (power form), by Descartes' rule on its Bernstein coefficients with exact bisection:
+    ``(q, q)`` for a root found exactly at a bisection point or an end, else an open
+    interval ``(lo, hi)`` holding exactly one root, with ``poly`` nonzero at both ends.
+
+    >>> import flint
+    >>> [tuple(map(str, i)) for i in isolate_in_unit_interval(flint.fmpz_poly([-1, 0, 2]))]   # 2t^2 - 1
+    [('0', '1')]
+    """
+    return _vca(_integer_bernstein(poly))
+
+
 def isolate_exact(coeffs) -> list[IsolatingInterval]:
     """All real roots in [0, 1] of a Bernstein polynomial, isolated exactly.
 
@@ -215,7 +228,7 @@ def isolate_exact(coeffs) -> list[IsolatingInterval]:
     found: list[IsolatingInterval] = []
     for factor, mult in factors:
         factor = flint.fmpz_poly(factor)
-        for lo, hi in _vca(_integer_bernstein(factor)):
+        for lo, hi in isolate_in_unit_interval(factor):
             found.append(IsolatingInterval(lo, hi, int(mult), factor))
     return _separate(found)
 

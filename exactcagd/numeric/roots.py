@@ -57,6 +57,7 @@ from ..exact.scalars import to_rational, to_tolerance
 from ..geometry._validate import instance_of
 from ..geometry.bezier_curve import BezierCurve
 from . import enclose as iv
+from .descartes import isolate_in_unit_interval
 
 __all__ = [
     "Root",
@@ -757,7 +758,10 @@ def _exact_roots(c: np.ndarray) -> list[Root]:
     ``arb_fmpz_poly_complex_roots`` (F. Johansson) for the certified root balls.  The
     integer power form is factored over the integers; a linear factor gives its rational
     root exactly; the real roots of every other (irreducible) factor come from flint's
-    root balls (:func:`_roots_in_balls`).  When a ball cannot be decided at the
+    root balls (:func:`_roots_in_balls`), or, for a factor with coefficients longer than
+    :data:`LARGE_COEFFICIENT_BITS`, from exact isolation in [0, 1] by Descartes' rule
+    (:func:`_roots_by_descartes`; flint isolates all complex roots, which takes minutes
+    for some such factors).  When a ball cannot be decided at the
     precisions of ``BALL_PRECISIONS``, exact isolation and bisection
     (:func:`_roots_by_bisection`) answers instead.  Roots that no float interval can
     separate share one enclosure (:func:`_share_enclosures`).
@@ -767,6 +771,61 @@ def _exact_roots(c: np.ndarray) -> list[Root]:
         return []
     roots = _roots_from_factors(poly)
     return _share_enclosures(_roots_by_bisection(poly) if roots is None else roots)
+
+
+#: irreducible factors with a coefficient longer than this (bits) are isolated in [0, 1] by
+#: Descartes' rule on Bernstein coefficients (:func:`_roots_by_descartes`), not by flint's
+#: balls of all their complex roots: measured on the quadratic with Bernstein coefficients
+#: ``[c, -1, 1]`` (a complex pair within ~c^-1/2 of t = 1), ``complex_roots`` takes 2 ms for a
+#: 300-bit ``c``, 94 ms at 700, 1.6 s at 1000 and over a minute at 2000 bits, where the
+#: Descartes isolation takes under 1 ms at 20,000 bits
+LARGE_COEFFICIENT_BITS = 256
+
+
+def _roots_by_descartes(factor: flint.fmpz_poly, mult: int) -> list[Root]:
+    """The roots in [0, 1] of a square-free integer polynomial by exact isolation in [0, 1]
+    alone (:func:`exactcagd.numeric.descartes.isolate_in_unit_interval`: Descartes' rule of
+    signs on Bernstein coefficients with bisection, notes 003 9.2 -- the
+    Vincent-Collins-Akritas method), each interval then bisected exactly into one float step
+    (:func:`_float_step`)."""
+    roots = []
+    for lo, hi in isolate_in_unit_interval(factor):
+        t, a, b = _rational_step(lo) if lo == hi else _float_step(factor, lo, hi)
+        roots.append(Root(t, (a, b), mult, True, True))
+    return roots
+
+
+def _float_step(poly: flint.fmpz_poly, lo: mpq, hi: mpq) -> tuple[float, float, float]:
+    """``(t, a, b)`` for the only root of the square-free ``poly`` in the open interval
+    ``(lo, hi)`` (nonzero at both ends): ``[a, b]`` is one float step, or one float when the
+    root is that float, holding it, and ``t`` the root correctly rounded (ties to even),
+    decided by exact signs only.  ``(lo, hi)`` is halved until its ends round outward into
+    one float step; a midpoint where ``poly`` vanishes is the root itself (rational)."""
+    s_lo = sign_at(poly, lo)
+    while True:
+        a, b = iv.enclose_scalar(lo)[0], iv.enclose_scalar(hi)[1]
+        if b <= math.nextafter(a, math.inf):
+            break
+        mid = (lo + hi) / 2
+        s_mid = sign_at(poly, mid)
+        if s_mid == 0:
+            return _rational_step(mid)
+        lo, hi = (mid, hi) if s_mid == s_lo else (lo, mid)
+    midpoint = (mpq(a) + mpq(b)) / 2
+    if lo < midpoint < hi:
+        s_mid = sign_at(poly, midpoint)
+        if s_mid == 0:
+            return _rational_step(midpoint)
+        below = s_mid != s_lo
+    else:
+        below = midpoint >= hi
+    return (a if below else b), max(a, 0.0), min(b, 1.0)
+
+
+def _rational_step(q: mpq) -> tuple[float, float, float]:
+    """:func:`_float_step` for a rational root ``q``: ``float(q)`` is correctly rounded."""
+    a, b = iv.enclose_scalar(q)
+    return float(q), max(a, 0.0), min(b, 1.0)
 
 
 #: working precisions (bits) of flint's root balls, tried in turn for each irreducible factor
@@ -783,6 +842,9 @@ def _roots_from_factors(poly: flint.fmpz_poly) -> list[Root] | None:
             q = mpq(-int(c0), int(c1))
             if 0 <= q <= 1:
                 roots.append(Root(float(q), iv.enclose_scalar(q), int(mult), True, True))
+            continue
+        if max(abs(int(k)) for k in factor.coeffs()).bit_length() > LARGE_COEFFICIENT_BITS:
+            roots.extend(_roots_by_descartes(factor, int(mult)))
             continue
         for prec in BALL_PRECISIONS:
             found = _roots_in_balls(factor, int(mult), prec)
