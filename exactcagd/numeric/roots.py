@@ -798,9 +798,10 @@ def _roots_by_descartes(factor: flint.fmpz_poly, mult: int) -> list[Root]:
 def _float_step(poly: flint.fmpz_poly, lo: mpq, hi: mpq) -> tuple[float, float, float]:
     """``(t, a, b)`` for the only root of the square-free ``poly`` in the open interval
     ``(lo, hi)`` (nonzero at both ends): ``[a, b]`` is one float step, or one float when the
-    root is that float, holding it, and ``t`` the root correctly rounded (ties to even),
-    decided by exact signs only.  ``(lo, hi)`` is halved until its ends round outward into
-    one float step; a midpoint where ``poly`` vanishes is the root itself (rational)."""
+    root is that float, holding it (inside [0, 1] when ``(lo, hi)`` is: 0 and 1 are
+    floats), and ``t`` the root correctly rounded (ties to even), decided by exact signs
+    only.  ``(lo, hi)`` is halved until its ends round outward into one float step; a
+    midpoint where ``poly`` vanishes is the root itself (rational)."""
     s_lo = sign_at(poly, lo)
     while True:
         a, b = iv.enclose_scalar(lo)[0], iv.enclose_scalar(hi)[1]
@@ -819,13 +820,12 @@ def _float_step(poly: flint.fmpz_poly, lo: mpq, hi: mpq) -> tuple[float, float, 
         below = s_mid != s_lo
     else:
         below = midpoint >= hi
-    return (a if below else b), max(a, 0.0), min(b, 1.0)
+    return (a if below else b), a, b
 
 
 def _rational_step(q: mpq) -> tuple[float, float, float]:
     """:func:`_float_step` for a rational root ``q``: ``float(q)`` is correctly rounded."""
-    a, b = iv.enclose_scalar(q)
-    return float(q), max(a, 0.0), min(b, 1.0)
+    return (float(q), *iv.enclose_scalar(q))
 
 
 #: working precisions (bits) of flint's root balls, tried in turn for each irreducible factor
