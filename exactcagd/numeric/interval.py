@@ -296,28 +296,20 @@ def _two_product_error(a: float, b: float, p: float) -> float:
     return ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
-def _add_down(a: float, b: float) -> float:
-    """``round_down(a + b)``."""
+def _add_directed(a: float, b: float, upward: bool) -> float:
+    """``round_up(a + b)`` if ``upward`` else ``round_down(a + b)``."""
     s = a + b
     if -_SAFE_HI < s < _SAFE_HI and -_SAFE_HI < a < _SAFE_HI and -_SAFE_HI < b < _SAFE_HI:
         if s == 0.0:
-            # an exact zero sum is -0 rounding down unless both terms are +0 (IEEE 754 6.3)
-            return 0.0 if (a == 0.0 and b == 0.0 and math.copysign(1.0, a) > 0 and math.copysign(1.0, b) > 0) else -0.0
+            if a == 0.0 and b == 0.0 and math.copysign(1.0, a) == math.copysign(1.0, b):
+                return a  # the sum of two zeros of one sign is that zero
+            return 0.0 if upward else -0.0  # any other exact zero sum: +0 up, -0 down (IEEE 754 6.3)
         bb = s - a
-        return s if (a - (s - bb)) + (b - bb) >= 0 else math.nextafter(s, -math.inf)
-    return _rd("add", a, b)
-
-
-def _add_up(a: float, b: float) -> float:
-    """``round_up(a + b)``."""
-    s = a + b
-    if -_SAFE_HI < s < _SAFE_HI and -_SAFE_HI < a < _SAFE_HI and -_SAFE_HI < b < _SAFE_HI:
-        if s == 0.0:
-            # an exact zero sum is +0 rounding up unless both terms are -0 (IEEE 754 6.3)
-            return -0.0 if (a == 0.0 and b == 0.0 and math.copysign(1.0, a) < 0 and math.copysign(1.0, b) < 0) else 0.0
-        bb = s - a
-        return s if (a - (s - bb)) + (b - bb) <= 0 else math.nextafter(s, math.inf)
-    return _ru("add", a, b)
+        error = (a - (s - bb)) + (b - bb)  # a + b = s + error exactly (TwoSum)
+        if upward:
+            return s if error <= 0 else math.nextafter(s, math.inf)
+        return s if error >= 0 else math.nextafter(s, -math.inf)
+    return _ru("add", a, b) if upward else _rd("add", a, b)
 
 
 def _mul_directed(a: float, b: float, upward: bool) -> float:
@@ -471,7 +463,7 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        return FloatInterval._make(_add_down(self._lo, o._lo), _add_up(self._hi, o._hi))
+        return FloatInterval._make(_add_directed(self._lo, o._lo, False), _add_directed(self._hi, o._hi, True))
 
     __radd__ = __add__
 
@@ -479,7 +471,7 @@ class FloatInterval:
         o = _float_operand(other)
         if o is None:
             return NotImplemented
-        return FloatInterval._make(_add_down(self._lo, -o._hi), _add_up(self._hi, -o._lo))
+        return FloatInterval._make(_add_directed(self._lo, -o._hi, False), _add_directed(self._hi, -o._lo, True))
 
     def __rsub__(self, other):
         o = _float_operand(other)
